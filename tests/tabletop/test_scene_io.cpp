@@ -1,0 +1,157 @@
+// scene.json validation: every error names the file and the JSON path.
+#include <catch2/catch.hpp>
+
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "stdlib/tabletop/scene_io.h"
+
+using namespace ksmc::stdlib::tabletop;
+using nlohmann::json;
+
+namespace {
+
+json valid_doc() {
+  return json::parse(R"({
+    "camera": {"fx": 615.0, "fy": 615.0, "cx": 320.0, "cy": 240.0, "width": 640, "height": 480},
+    "table": {"pose": {"t": [0.0, 0.1, 0.8], "q": [0.0, 1.0, 0.0, 0.0]}},
+    "image": "bg.png",
+    "objects": [
+      {"id": "box_0", "model": "cereal", "size": [0.1, 0.2, 0.3],
+       "pose": {"t": [0.0, 0.1, 0.65], "q": [0.0, 1.0, 0.0, 0.0]},
+       "keypoints": {"model": [[0.05, 0.1, 0.15], [0.0, 0.0, 0.0]], "image": [[300.0, 200.0], [320.0, 240.0]]}},
+      {"id": "box_1", "model": "tea", "size": [0.1, 0.1, 0.1],
+       "pose": {"t": [0.2, 0.1, 0.75], "q": [0.0, 1.0, 0.0, 0.0]}}
+    ]})");
+}
+
+std::string error_of(const json& doc) {
+  try {
+    (void)parse_scene(doc, "scene.json", "/data");
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+}  // namespace
+
+TEST_CASE("a valid scene is converted to the table frame", "[scene]") {
+  const SceneLoad load = parse_scene(valid_doc(), "scene.json", "/data");
+  CHECK(load.warnings.empty());
+  const Scene& s = load.scene;
+  REQUIRE(s.objects.size() == 2);
+  CHECK(s.camera.fx == 615.0);
+  CHECK(s.camera.width == 640);
+  CHECK(s.image == std::filesystem::path("/data/bg.png"));
+  // Table rotated 180° about camera x: table z = -camera z; object 0 is 0.15 m above the table top.
+  const SceneObject& o = s.objects[0];
+  CHECK(o.pose.t.x() == Approx(0.0).margin(1e-12));
+  CHECK(o.pose.t.y() == Approx(0.0).margin(1e-12));
+  CHECK(o.pose.t.z() == Approx(0.15));
+  CHECK(o.obb().min_z() == Approx(0.0).margin(1e-12));
+  CHECK(std::abs(o.pose.q.w()) == Approx(1.0));  // same orientation as the table
+  CHECK(s.objects[1].pose.t.x() == Approx(0.2));
+  CHECK(s.objects[1].pose.t.z() == Approx(0.05));
+  REQUIRE(o.keypoints_model.size() == 2);
+  CHECK(o.keypoints_image[1].x() == 320.0);
+  CHECK(s.objects[1].keypoints_model.empty());
+  // Round trip back to the camera frame.
+  CHECK((s.camera_pose(o).t - Eigen::Vector3d(0.0, 0.1, 0.65)).norm() < 1e-12);
+}
+
+TEST_CASE("scene errors name the file and JSON path", "[scene]") {
+  json d = valid_doc();
+  d["objects"][1]["pose"]["q"] = {0.0, 0.0, 0.0, 0.0};
+  CHECK(error_of(d) == "scene.json: objects[1].pose.q: zero quaternion");
+
+  d = valid_doc();
+  d["objects"][0].erase("size");
+  CHECK(error_of(d) == "scene.json: objects[0].size: missing field");
+
+  d = valid_doc();
+  d["objects"][0]["size"][2] = -0.1;
+  CHECK(error_of(d) == "scene.json: objects[0].size[2]: size must be > 0, got -0.1");
+
+  d = valid_doc();
+  d["objects"][0]["size"][0] = 0.0;
+  CHECK(error_of(d).rfind("scene.json: objects[0].size[0]: size must be > 0", 0) == 0);
+
+  d = valid_doc();
+  d["objects"][0]["pose"]["t"][1] = "x";
+  CHECK(error_of(d) == "scene.json: objects[0].pose.t[1]: expected a number, got string");
+
+  d = valid_doc();
+  d["objects"][0]["pose"]["t"][1] = std::numeric_limits<double>::quiet_NaN();
+  CHECK(error_of(d) == "scene.json: objects[0].pose.t[1]: not a finite number");
+
+  d = valid_doc();
+  d["table"]["pose"]["t"][0] = std::numeric_limits<double>::infinity();
+  CHECK(error_of(d) == "scene.json: table.pose.t[0]: not a finite number");
+
+  d = valid_doc();
+  d["objects"][0]["keypoints"]["image"].erase(1);
+  CHECK(error_of(d) == "scene.json: objects[0].keypoints: keypoint lists differ in length: model has 2, image has 1");
+
+  d = valid_doc();
+  d["objects"][1]["id"] = "box_0";
+  CHECK(error_of(d) == "scene.json: objects[1].id: duplicate id \"box_0\"");
+
+  d = valid_doc();
+  d["objects"][1]["id"] = "table";
+  CHECK(error_of(d) == "scene.json: objects[1].id: id \"table\" is reserved for the table");
+
+  d = valid_doc();
+  d["objects"] = json::array();
+  CHECK(error_of(d) == "scene.json: objects: empty scene: no objects");
+
+  d = valid_doc();
+  d.erase("camera");
+  CHECK(error_of(d) == "scene.json: camera: missing field");
+
+  d = valid_doc();
+  d["camera"]["width"] = 640.5;
+  CHECK(error_of(d) == "scene.json: camera.width: expected an integer, got number");
+
+  d = valid_doc();
+  d["camera"]["fx"] = 0;
+  CHECK(error_of(d) == "scene.json: camera.fx: must be > 0, got 0");
+
+  d = valid_doc();
+  d["objects"][0]["pose"]["q"] = {1.0, 0.0};
+  CHECK(error_of(d) == "scene.json: objects[0].pose.q: expected 4 numbers, got 2");
+
+  d = valid_doc();
+  d["objects"] = json::object();
+  CHECK(error_of(d) == "scene.json: objects: expected an array, got object");
+
+  d = valid_doc();
+  d["objects"][0]["keypoints"]["model"][0] = {1.0, 2.0};
+  CHECK(error_of(d) == "scene.json: objects[0].keypoints.model[0]: expected 3 numbers, got 2");
+}
+
+TEST_CASE("non-unit quaternions are normalised with a warning", "[scene]") {
+  json d = valid_doc();
+  d["objects"][1]["pose"]["q"] = {0.0, 2.0, 0.0, 0.0};
+  const SceneLoad load = parse_scene(d, "scene.json", "/data");
+  REQUIRE(load.warnings.size() == 1);
+  CHECK(load.warnings[0] == "scene.json: objects[1].pose.q: non-unit quaternion (norm 2), normalised");
+  CHECK(load.scene.objects[1].pose.q.norm() == Approx(1.0));
+  CHECK(load.scene.objects[1].pose.t.z() == Approx(0.05));
+}
+
+TEST_CASE("load_scene reports unreadable and malformed files by name", "[scene]") {
+  const auto dir = std::filesystem::path(KSMC_BINARY_DIR) / "test_tabletop_scene_tmp";
+  std::filesystem::create_directories(dir);
+  CHECK_THROWS_WITH(load_scene(dir / "missing.json"), Catch::Contains("missing.json: cannot open file"));
+  {
+    std::ofstream(dir / "broken.json") << "{\"camera\": [1, 2";
+  }
+  CHECK_THROWS_WITH(load_scene(dir / "broken.json"), Catch::Contains("broken.json: invalid JSON"));
+  {
+    std::ofstream(dir / "ok.json") << valid_doc().dump();
+  }
+  const SceneLoad load = load_scene(dir / "ok.json");
+  CHECK(load.scene.image == dir / "bg.png");
+}
