@@ -1,0 +1,157 @@
+#include "stdlib/indoor/coverage.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace ksmc::stdlib::indoor {
+
+int covering_units(const CellCounts& c) {
+  int n = 0;
+  for (auto a : c.area) n += a;
+  return n;
+}
+
+int lut_class_of(const CellCounts& c) {
+  for (int k = kMaxLutClasses - 1; k > 0; --k)
+    if (c.area[static_cast<std::size_t>(k)] > 0) return k;
+  return 0;
+}
+
+Predicted predicted_class(const CellCounts& c) {
+  if (c.door > 0) return Predicted::Free;
+  if (c.wall > 0) return Predicted::Wall;
+  if (covering_units(c) > 0) return Predicted::Free;
+  return Predicted::Unknown;
+}
+
+CoverageGrid::CoverageGrid(const ClassGrid& observed) : rows_(observed.rows), cols_(observed.cols) {
+  if (observed.empty()) throw std::invalid_argument("CoverageGrid: empty class grid");
+  obs_.resize(static_cast<std::size_t>(rows_) * static_cast<std::size_t>(cols_));
+  cells_.resize(obs_.size());
+  for (int r = 0; r < rows_; ++r) {
+    const std::uint8_t* row = observed.ptr<std::uint8_t>(r);
+    for (int c = 0; c < cols_; ++c) {
+      if (row[c] > 2)
+        throw std::invalid_argument("CoverageGrid: class grid value " + std::to_string(row[c]) +
+                                    " at row " + std::to_string(r) + ", col " +
+                                    std::to_string(c) + " is not a Cell (0..2)");
+      obs_[index(r, c)] = row[c];
+      ++hist_[static_cast<std::size_t>(
+          histogram_index(0, static_cast<Cell>(row[c]), Predicted::Unknown))];
+    }
+  }
+}
+
+namespace {
+int key_of(const CellCounts& c, std::uint8_t obs) {
+  return lut_class_of(c) * 9 + obs * 3 + static_cast<int>(predicted_class(c));
+}
+int gamma_of(const CellCounts& c) { return std::max(covering_units(c) - 1, 0); }
+
+void add_count(std::uint16_t& v, int d) {
+  const int n = static_cast<int>(v) + d;
+  if (n < 0 || n > 0xFFFF) throw std::logic_error("CoverageGrid: cell count out of range");
+  v = static_cast<std::uint16_t>(n);
+}
+
+bool in(const RowSpan& s, int x) { return x >= s.x0 && x < s.x1; }
+
+// Sorted unique break points of up to 8 span ends.
+int breaks(const RowSpan* spans, int n, int* out) {
+  int m = 0;
+  for (int i = 0; i < n; ++i) {
+    if (spans[i].empty()) continue;
+    out[m++] = spans[i].x0;
+    out[m++] = spans[i].x1;
+  }
+  std::sort(out, out + m);
+  return static_cast<int>(std::unique(out, out + m) - out);
+}
+}  // namespace
+
+void CoverageGrid::bump(std::size_t idx, int lut_class, int d_area, int d_wall, int d_door) {
+  CellCounts& c = cells_[idx];
+  const int k0 = key_of(c, obs_[idx]);
+  const int g0 = gamma_of(c);
+  if (d_area) add_count(c.area[static_cast<std::size_t>(lut_class)], d_area);
+  if (d_wall) add_count(c.wall, d_wall);
+  if (d_door) add_count(c.door, d_door);
+  const int k1 = key_of(c, obs_[idx]);
+  if (k0 != k1) {
+    --hist_[static_cast<std::size_t>(k0)];
+    ++hist_[static_cast<std::size_t>(k1)];
+  }
+  overlap_ += gamma_of(c) - g0;
+}
+
+void CoverageGrid::unit_rows(const UnitRaster* before, const UnitRaster* after, int lut_class) {
+  if (lut_class < 0 || lut_class >= kMaxLutClasses)
+    throw std::invalid_argument("CoverageGrid: lut class " + std::to_string(lut_class) +
+                                " out of range");
+  int r0 = rows_, r1 = 0;
+  for (const UnitRaster* u : {before, after}) {
+    if (!u || u->outer.empty()) continue;
+    r0 = std::min(r0, u->outer.row_begin());
+    r1 = std::max(r1, u->outer.row_end());
+  }
+  r0 = std::max(r0, 0);
+  r1 = std::min(r1, rows_);
+  for (int row = r0; row < r1; ++row) {
+    RowSpan sp[4];
+    if (before) { sp[0] = before->outer.span(row); sp[1] = before->inner.span(row); }
+    if (after) { sp[2] = after->outer.span(row); sp[3] = after->inner.span(row); }
+    int bp[8];
+    const int m = breaks(sp, 4, bp);
+    for (int i = 0; i + 1 < m; ++i) {
+      const int x = bp[i];
+      const int oa = in(sp[0], x), ow = oa && !in(sp[1], x);
+      const int na = in(sp[2], x), nw = na && !in(sp[3], x);
+      const int da = na - oa, dw = nw - ow;
+      if (!da && !dw) continue;
+      const std::size_t base = index(row, 0);
+      for (int c = bp[i]; c < bp[i + 1]; ++c)
+        bump(base + static_cast<std::size_t>(c), lut_class, da, dw, 0);
+    }
+  }
+}
+
+void CoverageGrid::door_rows(const SpanRaster* before, const SpanRaster* after) {
+  int r0 = rows_, r1 = 0;
+  for (const SpanRaster* s : {before, after}) {
+    if (!s || s->empty()) continue;
+    r0 = std::min(r0, s->row_begin());
+    r1 = std::max(r1, s->row_end());
+  }
+  r0 = std::max(r0, 0);
+  r1 = std::min(r1, rows_);
+  for (int row = r0; row < r1; ++row) {
+    RowSpan sp[2];
+    if (before) sp[0] = before->span(row);
+    if (after) sp[1] = after->span(row);
+    int bp[4];
+    const int m = breaks(sp, 2, bp);
+    for (int i = 0; i + 1 < m; ++i) {
+      const int d = static_cast<int>(in(sp[1], bp[i])) - static_cast<int>(in(sp[0], bp[i]));
+      if (!d) continue;
+      const std::size_t base = index(row, 0);
+      for (int c = bp[i]; c < bp[i + 1]; ++c) bump(base + static_cast<std::size_t>(c), 0, 0, 0, d);
+    }
+  }
+}
+
+void CoverageGrid::update_unit(const UnitRaster* before, int before_class, const UnitRaster* after,
+                               int after_class) {
+  if (before && after && before_class != after_class) {
+    unit_rows(before, nullptr, before_class);
+    unit_rows(nullptr, after, after_class);
+    return;
+  }
+  unit_rows(before, after, before ? before_class : after_class);
+}
+
+void CoverageGrid::update_door(const SpanRaster* before, const SpanRaster* after) {
+  door_rows(before, after);
+}
+
+}  // namespace ksmc::stdlib::indoor

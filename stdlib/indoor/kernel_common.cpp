@@ -1,0 +1,80 @@
+#include "stdlib/indoor/kernel_common.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ksmc::stdlib::indoor::kernels {
+
+std::vector<double> unit_change_weights(const Context& c, const World& w) {
+  std::vector<double> b;
+  b.reserve(w.units().size());
+  for (const Unit& u : w.units()) b.push_back(capped_inverse(u.weight(), c.p.h_b));
+  return b;
+}
+
+std::array<double, 4> wall_change_weights(const Context& c, const Unit& u) {
+  std::array<double, 4> v{};
+  for (std::size_t j = 0; j < 4; ++j) v[j] = capped_inverse(u.wall_weight[j], c.p.h_v);
+  return v;
+}
+
+namespace {
+// a_r(s) = 1 / d(c_r, c_s), with the distance floored at one cell.
+std::vector<double> partner_weights(const World& w, std::size_t r) {
+  const auto units = w.units();
+  std::vector<double> a(units.size(), 0.0);
+  for (std::size_t s = 0; s < units.size(); ++s) {
+    if (s == r) continue;
+    const double d = distance({units[r].rect.cx, units[r].rect.cy}, {units[s].rect.cx, units[s].rect.cy});
+    a[s] = 1.0 / std::max(d, 1.0);
+  }
+  return a;
+}
+}  // namespace
+
+std::optional<std::size_t> unit_index(const World& w, UnitId id) {
+  const auto units = w.units();
+  for (std::size_t i = 0; i < units.size(); ++i)
+    if (units[i].id == id) return i;
+  return std::nullopt;
+}
+
+double log_pair_probability(const World& w, UnitId r, UnitId s) {
+  const auto ir = unit_index(w, r), is = unit_index(w, s);
+  if (!ir || !is || *ir == *is) return kNegInf;
+  const double n = static_cast<double>(w.units().size());
+  const auto ar = partner_weights(w, *ir), as = partner_weights(w, *is);
+  const double p = (std::exp(log_normalized(ar, *is)) + std::exp(log_normalized(as, *ir))) / n;
+  return p > 0.0 ? std::log(p) : kNegInf;
+}
+
+std::optional<std::pair<std::size_t, std::size_t>> draw_pair(const World& w, Rng& rng) {
+  const auto n = w.units().size();
+  if (n < 2) return std::nullopt;
+  const auto r = static_cast<std::size_t>(std::uniform_int_distribution<std::size_t>(0, n - 1)(rng));
+  const auto a = partner_weights(w, r);
+  const auto s = draw_weighted(a, rng);
+  if (!s) return std::nullopt;
+  return std::make_pair(r, *s);
+}
+
+bool unit_free(const Context& c, const World& w, UnitId id, const OrientedRect& r) {
+  const Unit* u = w.find_unit(id);
+  return u && same_rect(u->rect, r, c.p.coincide) && w.door_count(id) == 0;
+}
+
+Shape shape_of(const Move& m) {
+  Shape s;
+  for (const auto& ch : m.units) {
+    if (ch.before && ch.after) s.modified.push_back(&ch);
+    else if (ch.before) s.removed.push_back(&ch);
+    else if (ch.after) s.added.push_back(&ch);
+  }
+  return s;
+}
+
+double log_normal_pdf(double x, double sigma) {
+  return -0.5 * (x / sigma) * (x / sigma) - std::log(sigma) - 0.5 * std::log(2.0 * kPi);
+}
+
+}  // namespace ksmc::stdlib::indoor::kernels

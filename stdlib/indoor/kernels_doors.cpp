@@ -1,0 +1,133 @@
+// ALLOCATE / DELETE (seed §3.5.2): ALLOCATE draws a door candidate by omega_g (eq. 3.23) and
+// assigns it to the two units whose walls it lies on (the two nearest walls parallel to the
+// segment within door_snap cells whose extent contains its midpoint); DELETE draws an assigned
+// door by z_g (eq. 3.28).
+#include <algorithm>
+#include <cmath>
+
+#include "stdlib/indoor/kernel_common.h"
+
+namespace ksmc::stdlib::indoor::kernels {
+
+namespace {
+
+std::optional<std::pair<UnitId, UnitId>> attach(const Context& c, const World& w, Point2 a, Point2 b) {
+  const double len = distance(a, b);
+  if (!(len > 0.0)) return std::nullopt;
+  const Point2 mid{0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
+  const double ang = std::atan2(b.y - a.y, b.x - a.x);
+  struct Hit {
+    double d;
+    UnitId id;
+  };
+  std::vector<Hit> hits;
+  for (const Unit& u : w.units()) {
+    const auto cs = u.rect.corners();
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < 4; ++j) {
+      const Point2 p = cs[j], q = cs[(j + 1) % 4];
+      const double wl = distance(p, q);
+      if (!(wl > 0.0)) continue;
+      double dang = std::fmod(std::abs(std::atan2(q.y - p.y, q.x - p.x) - ang), kPi);
+      dang = std::min(dang, kPi - dang);
+      if (dang > c.p.door_angle) continue;
+      const double tx = (q.x - p.x) / wl, ty = (q.y - p.y) / wl;
+      const double along = (mid.x - p.x) * tx + (mid.y - p.y) * ty;
+      const double across = std::abs(-(mid.x - p.x) * ty + (mid.y - p.y) * tx);
+      if (along < 0.0 || along > wl || across > c.p.door_snap) continue;
+      best = std::min(best, across);
+    }
+    if (std::isfinite(best)) hits.push_back({best, u.id});
+  }
+  if (hits.size() < 2) return std::nullopt;
+  std::sort(hits.begin(), hits.end(), [](const Hit& x, const Hit& y) { return x.d != y.d ? x.d < y.d : x.id < y.id; });
+  return std::make_pair(std::min(hits[0].id, hits[1].id), std::max(hits[0].id, hits[1].id));
+}
+
+bool same_segment(const Context& c, Point2 a, Point2 b, Point2 p, Point2 q) {
+  const double e = c.p.coincide;
+  return (distance(a, p) <= e && distance(b, q) <= e) || (distance(a, q) <= e && distance(b, p) <= e);
+}
+
+bool already_assigned(const Context& c, const World& w, Point2 a, Point2 b) {
+  for (const Door& d : w.doors())
+    if (same_segment(c, d.a, d.b, a, b)) return true;
+  return false;
+}
+
+std::vector<double> door_candidate_weights(std::span<const CandidateDoor> cands) {
+  std::vector<double> v;
+  v.reserve(cands.size());
+  for (const auto& k : cands) v.push_back(std::isfinite(k.weight) && k.weight > 0.0 ? k.weight : 0.0);
+  return v;
+}
+
+double log_door_mass(const Context& c, std::span<const CandidateDoor> cands, const std::vector<double>& v,
+                     Point2 a, Point2 b) {
+  double total = 0.0, mass = 0.0;
+  for (std::size_t i = 0; i < cands.size(); ++i) {
+    total += v[i];
+    if (v[i] > 0.0 && same_segment(c, cands[i].a, cands[i].b, a, b)) mass += v[i];
+  }
+  return (total > 0.0 && mass > 0.0) ? std::log(mass / total) : kNegInf;
+}
+
+std::vector<double> delete_weights(const Context& c, const World& w) {
+  std::vector<double> z;
+  z.reserve(w.doors().size());
+  for (const Door& d : w.doors()) z.push_back(capped_inverse(d.weight, c.p.h_g));
+  return z;
+}
+
+}  // namespace
+
+std::optional<Forward> propose_allocate(const Context& c, const World& w, Rng& rng) {
+  if (!c.src.doors) return std::nullopt;
+  const auto cands = c.src.doors(w);
+  const auto v = door_candidate_weights(cands);
+  const auto i = draw_weighted(v, rng);
+  if (!i) return std::nullopt;
+  const CandidateDoor& k = cands[*i];
+  if (already_assigned(c, w, k.a, k.b)) return std::nullopt;
+  const auto units = attach(c, w, k.a, k.b);
+  if (!units) return std::nullopt;
+  const Door d = c.ev.make_door(w.next_door_id(), units->first, units->second, k.a, k.b);
+  Forward f;
+  f.move.kind = KernelKind::Allocate;
+  f.move.doors.push_back({d.id, std::nullopt, d});
+  f.log_q = log_door_mass(c, cands, v, k.a, k.b);
+  return f;
+}
+
+double log_q_allocate(const Context& c, const World& w, const Move& m) {
+  if (!c.src.doors || !m.units.empty() || m.doors.size() != 1 || m.doors[0].before || !m.doors[0].after)
+    return kNegInf;
+  const Door& d = *m.doors[0].after;
+  if (w.find_door(d.id) || already_assigned(c, w, d.a, d.b)) return kNegInf;
+  const auto units = attach(c, w, d.a, d.b);
+  if (!units || units->first != d.unit_a || units->second != d.unit_b) return kNegInf;
+  const auto cands = c.src.doors(w);
+  return log_door_mass(c, cands, door_candidate_weights(cands), d.a, d.b);
+}
+
+std::optional<Forward> propose_delete(const Context& c, const World& w, Rng& rng) {
+  const auto z = delete_weights(c, w);
+  const auto i = draw_weighted(z, rng);
+  if (!i) return std::nullopt;
+  const Door& d = w.doors()[*i];
+  Forward f;
+  f.move.kind = KernelKind::Delete;
+  f.move.doors.push_back({d.id, d, std::nullopt});
+  f.log_q = log_normalized(z, *i);
+  return f;
+}
+
+double log_q_delete(const Context& c, const World& w, const Move& m) {
+  if (!m.units.empty() || m.doors.size() != 1 || !m.doors[0].before || m.doors[0].after) return kNegInf;
+  const auto doors = w.doors();
+  for (std::size_t i = 0; i < doors.size(); ++i)
+    if (doors[i].id == m.doors[0].id) return log_normalized(delete_weights(c, w), i);
+  return kNegInf;
+}
+
+}  // namespace ksmc::stdlib::indoor::kernels

@@ -1,0 +1,70 @@
+// SHRINK / DILATE (seed §3.5.2): unit drawn by b_r (eq. 3.21), wall by v_w (eq. 3.22), shifted
+// parallel to itself by a zero-mean Gaussian amount whose sign is the kernel's: SHRINK moves
+// the wall inward, DILATE outward (each a half-normal of scale shift_sigma). The reverse of
+// SHRINK(wall j, -d) is DILATE(wall j, +d) on the changed unit.
+#include <cmath>
+
+#include "stdlib/indoor/kernel_common.h"
+
+namespace ksmc::stdlib::indoor::kernels {
+
+namespace {
+
+std::optional<OrientedRect> shifted(const Context& c, const OrientedRect& r, int wall, double delta) {
+  const Box b = shift_box_wall(own_box(r), wall, delta);
+  if (b.width() < c.p.min_size || b.height() < c.p.min_size) return std::nullopt;
+  return rect_from_box(b, Frame(r.theta));
+}
+
+double log_choice(const Context& c, const World& w, UnitId id, int wall, double delta) {
+  const auto i = unit_index(w, id);
+  if (!i) return kNegInf;
+  const auto v = wall_change_weights(c, w.units()[*i]);
+  // Half-normal density of |delta|: 2 * N(|delta|; 0, sigma).
+  return log_normalized(unit_change_weights(c, w), *i) + log_normalized(v, static_cast<std::size_t>(wall)) +
+         std::log(2.0) + log_normal_pdf(std::abs(delta), c.p.shift_sigma);
+}
+
+}  // namespace
+
+std::optional<Forward> propose_shift(KernelKind kind, const Context& c, const World& w, Rng& rng) {
+  const auto b = unit_change_weights(c, w);
+  const auto i = draw_weighted(b, rng);
+  if (!i) return std::nullopt;
+  const Unit& u = w.units()[*i];
+  const auto v = wall_change_weights(c, u);
+  const auto j = draw_weighted(v, rng);
+  if (!j) return std::nullopt;
+  const double mag = std::abs(std::normal_distribution<double>(0.0, c.p.shift_sigma)(rng));
+  if (!(mag > 0.0)) return std::nullopt;
+  const double delta = kind == KernelKind::Shrink ? -mag : mag;
+  if (w.door_count(u.id) > 0) return std::nullopt;
+  const int wall = static_cast<int>(*j);
+  const auto r = shifted(c, u.rect, wall, delta);
+  if (!r) return std::nullopt;
+  Forward f;
+  f.move.kind = kind;
+  f.move.units.push_back({u.id, u, c.ev.make_unit(u.id, *r, u.lut_class)});
+  f.move.detail.wall = wall;
+  f.move.detail.delta = delta;
+  f.log_q = log_normalized(b, *i) + log_normalized(v, *j) + std::log(2.0) +
+            log_normal_pdf(mag, c.p.shift_sigma);
+  return f;
+}
+
+double log_q_shift(KernelKind kind, const Context& c, const World& w, const Move& m) {
+  const Shape s = shape_of(m);
+  if (s.modified.size() != 1 || !s.added.empty() || !s.removed.empty() || !m.doors.empty()) return kNegInf;
+  const int wall = m.detail.wall;
+  const double delta = m.detail.delta;
+  if (wall < 0 || wall > 3) return kNegInf;
+  if ((kind == KernelKind::Shrink && !(delta < 0.0)) || (kind == KernelKind::Dilate && !(delta > 0.0)))
+    return kNegInf;
+  const UnitChange& ch = *s.modified[0];
+  if (!unit_free(c, w, ch.id, ch.before->rect)) return kNegInf;
+  const auto r = shifted(c, w.find_unit(ch.id)->rect, wall, delta);
+  if (!r || !same_rect(*r, ch.after->rect, c.p.coincide)) return kNegInf;
+  return log_choice(c, w, ch.id, wall, delta);
+}
+
+}  // namespace ksmc::stdlib::indoor::kernels

@@ -1,0 +1,158 @@
+// SPLIT / MERGE (seed §3.5.2). SPLIT: a member unit drawn uniformly, a split line inside it
+// drawn by omega_e = l(e) (eq. 3.18, times the orientation bias), extended across two opposite
+// walls; the cut is taken perpendicular to those walls through the mean of the two crossings.
+// MERGE: first unit uniform, second by a_r(s) = 1/d (eq. 3.19-3.20); the two must tile a
+// rectangle exactly (same frame, a full common wall), which is the only case SPLIT can undo.
+#include <algorithm>
+#include <cmath>
+
+#include "stdlib/indoor/kernel_common.h"
+
+namespace ksmc::stdlib::indoor::kernels {
+
+namespace {
+
+struct Cut {
+  Box first, second;  // in the unit's own frame
+};
+
+std::optional<Cut> cut_of(const Context& c, const OrientedRect& r, const CandidateLine& line) {
+  const Frame f(r.theta);
+  const Box b = own_box(r);
+  const Point2 p = f.to_local(line.a), q = f.to_local(line.b);
+  const double dx = q.x - p.x, dy = q.y - p.y;
+  if (std::abs(dx) < 1e-12 && std::abs(dy) < 1e-12) return std::nullopt;
+  Cut cut;
+  if (std::abs(dx) >= std::abs(dy)) {  // crosses the x0 and x1 walls
+    const double y0 = p.y + (b.x0 - p.x) * dy / dx, y1 = p.y + (b.x1 - p.x) * dy / dx;
+    if (!(y0 > b.y0 && y0 < b.y1 && y1 > b.y0 && y1 < b.y1)) return std::nullopt;
+    const double pos = 0.5 * (y0 + y1);
+    cut = {{b.x0, b.x1, b.y0, pos}, {b.x0, b.x1, pos, b.y1}};
+  } else {  // crosses the y0 and y1 walls
+    const double x0 = p.x + (b.y0 - p.y) * dx / dy, x1 = p.x + (b.y1 - p.y) * dx / dy;
+    if (!(x0 > b.x0 && x0 < b.x1 && x1 > b.x0 && x1 < b.x1)) return std::nullopt;
+    const double pos = 0.5 * (x0 + x1);
+    cut = {{b.x0, pos, b.y0, b.y1}, {pos, b.x1, b.y0, b.y1}};
+  }
+  for (const Box& x : {cut.first, cut.second})
+    if (x.width() < c.p.min_size || x.height() < c.p.min_size) return std::nullopt;
+  return cut;
+}
+
+std::vector<double> line_weights(const Context& c, const std::vector<CandidateLine>& lines) {
+  std::vector<double> w;
+  w.reserve(lines.size());
+  for (const auto& l : lines) {
+    const double len = distance(l.a, l.b);
+    const double base = l.weight > 0.0 ? l.weight : len;
+    const double v = base * c.p.orientation.factor(std::atan2(l.b.y - l.a.y, l.b.x - l.a.x));
+    w.push_back(std::isfinite(v) && v > 0.0 ? v : 0.0);
+  }
+  return w;
+}
+
+// log of the total normalised weight of the lines whose cut of `r` yields {a, b}.
+double log_cut_mass(const Context& c, const OrientedRect& r, const std::vector<CandidateLine>& lines,
+                    const std::vector<double>& w, const OrientedRect& a, const OrientedRect& b) {
+  double total = 0.0, mass = 0.0;
+  const Frame f(r.theta);
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    total += w[i];
+    if (!(w[i] > 0.0)) continue;
+    const auto cut = cut_of(c, r, lines[i]);
+    if (!cut) continue;
+    const OrientedRect p = rect_from_box(cut->first, f), q = rect_from_box(cut->second, f);
+    if ((same_rect(p, a, c.p.coincide) && same_rect(q, b, c.p.coincide)) ||
+        (same_rect(p, b, c.p.coincide) && same_rect(q, a, c.p.coincide)))
+      mass += w[i];
+  }
+  return (total > 0.0 && mass > 0.0) ? std::log(mass / total) : kNegInf;
+}
+
+// The rectangle tiled exactly by r and s, if any.
+std::optional<OrientedRect> merged(const Context& c, const OrientedRect& r, const OrientedRect& s) {
+  const Frame f(r.theta);
+  const auto br = box_in_frame(r, f, c.p.align_angle), bs = box_in_frame(s, f, c.p.align_angle);
+  if (!br || !bs) return std::nullopt;
+  const double e = c.p.coincide;
+  auto eq = [e](double x, double y) { return std::abs(x - y) <= e; };
+  const bool same_x = eq(br->x0, bs->x0) && eq(br->x1, bs->x1);
+  const bool same_y = eq(br->y0, bs->y0) && eq(br->y1, bs->y1);
+  const bool stacked = same_x && (eq(br->y1, bs->y0) || eq(bs->y1, br->y0));
+  const bool beside = same_y && (eq(br->x1, bs->x0) || eq(bs->x1, br->x0));
+  if (!stacked && !beside) return std::nullopt;
+  const Box u{std::min(br->x0, bs->x0), std::max(br->x1, bs->x1), std::min(br->y0, bs->y0),
+              std::max(br->y1, bs->y1)};
+  return rect_from_box(u, f);
+}
+
+}  // namespace
+
+std::optional<Forward> propose_split(const Context& c, const World& w, Rng& rng) {
+  const auto units = w.units();
+  if (units.empty() || !c.src.split_lines) return std::nullopt;
+  const auto i = std::uniform_int_distribution<std::size_t>(0, units.size() - 1)(rng);
+  const Unit& u = units[i];
+  if (w.door_count(u.id) > 0) return std::nullopt;
+  const auto lines = c.src.split_lines(w, u);
+  const auto lw = line_weights(c, lines);
+  const auto e = draw_weighted(lw, rng);
+  if (!e) return std::nullopt;
+  const auto cut = cut_of(c, u.rect, lines[*e]);
+  if (!cut) return std::nullopt;
+  const Frame f(u.rect.theta);
+  const UnitId id = w.next_unit_id();
+  const Unit a = c.ev.make_unit(id, rect_from_box(cut->first, f), u.lut_class);
+  const Unit b = c.ev.make_unit(id + 1, rect_from_box(cut->second, f), u.lut_class);
+  Forward fw;
+  fw.move.kind = KernelKind::Split;
+  fw.move.units = {{u.id, u, std::nullopt}, {a.id, std::nullopt, a}, {b.id, std::nullopt, b}};
+  fw.log_q = -std::log(static_cast<double>(units.size())) + log_cut_mass(c, u.rect, lines, lw, a.rect, b.rect);
+  return fw;
+}
+
+double log_q_split(const Context& c, const World& w, const Move& m) {
+  const Shape s = shape_of(m);
+  if (!c.src.split_lines || s.removed.size() != 1 || s.added.size() != 2 || !s.modified.empty() ||
+      !m.doors.empty())
+    return kNegInf;
+  const UnitChange& ch = *s.removed[0];
+  if (!unit_free(c, w, ch.id, ch.before->rect)) return kNegInf;
+  const Unit& u = *w.find_unit(ch.id);
+  const auto lines = c.src.split_lines(w, u);
+  return -std::log(static_cast<double>(w.units().size())) +
+         log_cut_mass(c, u.rect, lines, line_weights(c, lines), s.added[0]->after->rect,
+                      s.added[1]->after->rect);
+}
+
+std::optional<Forward> propose_merge(const Context& c, const World& w, Rng& rng) {
+  const auto pair = draw_pair(w, rng);
+  if (!pair) return std::nullopt;
+  const Unit& r = w.units()[pair->first];
+  const Unit& s = w.units()[pair->second];
+  if (w.door_count(r.id) > 0 || w.door_count(s.id) > 0) return std::nullopt;
+  const auto rect = merged(c, r.rect, s.rect);
+  if (!rect) return std::nullopt;
+  // The merged unit keeps the larger unit's likelihood class.
+  const std::uint8_t cls = r.rect.area() >= s.rect.area() ? r.lut_class : s.lut_class;
+  const Unit u = c.ev.make_unit(w.next_unit_id(), *rect, cls);
+  Forward fw;
+  fw.move.kind = KernelKind::Merge;
+  fw.move.units = {{r.id, r, std::nullopt}, {s.id, s, std::nullopt}, {u.id, std::nullopt, u}};
+  fw.log_q = log_pair_probability(w, r.id, s.id);
+  return fw;
+}
+
+double log_q_merge(const Context& c, const World& w, const Move& m) {
+  const Shape s = shape_of(m);
+  if (s.removed.size() != 2 || s.added.size() != 1 || !s.modified.empty() || !m.doors.empty())
+    return kNegInf;
+  const UnitChange& a = *s.removed[0];
+  const UnitChange& b = *s.removed[1];
+  if (!unit_free(c, w, a.id, a.before->rect) || !unit_free(c, w, b.id, b.before->rect)) return kNegInf;
+  const auto rect = merged(c, w.find_unit(a.id)->rect, w.find_unit(b.id)->rect);
+  if (!rect || !same_rect(*rect, s.added[0]->after->rect, c.p.coincide)) return kNegInf;
+  return log_pair_probability(w, a.id, b.id);
+}
+
+}  // namespace ksmc::stdlib::indoor::kernels

@@ -1,0 +1,68 @@
+#include "stdlib/indoor/scored_world.h"
+
+#include <algorithm>
+
+namespace ksmc::stdlib::indoor {
+
+ScoredWorld::ScoredWorld(const ClassGrid& observed, ScoreParams params)
+    : observed_(observed.clone()), params_(std::move(params)), lik_(params_.tables), grid_(observed_) {
+  params_.prior.validate();
+}
+
+UnitRaster ScoredWorld::unit_raster(const Unit& u) const {
+  return UnitRaster(u.rect, params_.raster.wall_thickness, grid_.cols());
+}
+
+SpanRaster ScoredWorld::door_raster(const Door& d) const {
+  return SpanRaster(door_rect(d.a, d.b, params_.raster.door_depth_or_default()), grid_.cols());
+}
+
+void ScoredWorld::apply(const Move& m) {
+  std::vector<UnitId> ids;
+  ids.reserve(m.units.size());
+  for (const auto& c : m.units)
+    if (std::find(ids.begin(), ids.end(), c.id) == ids.end()) ids.push_back(c.id);
+  for (const auto& c : m.units) {
+    if (c.after && c.after->lut_class >= kMaxLutClasses)
+      throw std::logic_error("ScoredWorld::apply: unit " + std::to_string(c.id) +
+                             " has lut class out of range");
+  }
+  const std::int64_t theta_before = misaligned_pairs_involving(world_, ids, params_.prior);
+  World next = world_.applied(m);  // throws before anything changes when the move misfits
+  for (const auto& c : m.units) {
+    UnitRaster b, a;
+    if (c.before) b = unit_raster(*c.before);
+    if (c.after) a = unit_raster(*c.after);
+    grid_.update_unit(c.before ? &b : nullptr, c.before ? c.before->lut_class : 0,
+                      c.after ? &a : nullptr, c.after ? c.after->lut_class : 0);
+  }
+  for (const auto& c : m.doors) {
+    SpanRaster b, a;
+    if (c.before) b = door_raster(*c.before);
+    if (c.after) a = door_raster(*c.after);
+    grid_.update_door(c.before ? &b : nullptr, c.after ? &a : nullptr);
+  }
+  world_ = std::move(next);
+  theta_ += misaligned_pairs_involving(world_, ids, params_.prior) - theta_before;
+}
+
+void ScoredWorld::reset(const World& w) {
+  grid_ = CoverageGrid(observed_);
+  world_ = World();
+  Move all;
+  for (const Unit& u : w.units()) all.units.push_back({u.id, std::nullopt, u});
+  for (const Door& d : w.doors()) all.doors.push_back({d.id, std::nullopt, d});
+  apply(all);
+  world_ = w;  // keeps the id counters of `w`
+}
+
+double ScoredWorld::recompute_log_likelihood() const {
+  return full_score(observed_, world_, lik_, params_.raster).log_likelihood;
+}
+
+double ScoredWorld::recompute_log_prior() const {
+  const FullScore f = full_score(observed_, world_, lik_, params_.raster);
+  return weak_log_prior(misaligned_pairs_total(world_, params_.prior), f.overlap, params_.prior);
+}
+
+}  // namespace ksmc::stdlib::indoor

@@ -1,0 +1,132 @@
+#include "stdlib/indoor/world.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace ksmc::stdlib::indoor {
+
+double Unit::weight() const {
+  return *std::min_element(wall_weight.begin(), wall_weight.end());
+}
+
+KernelKind reverse_of(KernelKind k) {
+  switch (k) {
+    case KernelKind::Add: return KernelKind::Remove;
+    case KernelKind::Remove: return KernelKind::Add;
+    case KernelKind::Split: return KernelKind::Merge;
+    case KernelKind::Merge: return KernelKind::Split;
+    case KernelKind::Shrink: return KernelKind::Dilate;
+    case KernelKind::Dilate: return KernelKind::Shrink;
+    case KernelKind::Allocate: return KernelKind::Delete;
+    case KernelKind::Delete: return KernelKind::Allocate;
+    case KernelKind::Interchange: return KernelKind::Interchange;
+  }
+  return k;
+}
+
+const char* kernel_name(KernelKind k) {
+  switch (k) {
+    case KernelKind::Add: return "ADD";
+    case KernelKind::Remove: return "REMOVE";
+    case KernelKind::Split: return "SPLIT";
+    case KernelKind::Merge: return "MERGE";
+    case KernelKind::Shrink: return "SHRINK";
+    case KernelKind::Dilate: return "DILATE";
+    case KernelKind::Allocate: return "ALLOCATE";
+    case KernelKind::Delete: return "DELETE";
+    case KernelKind::Interchange: return "INTERCHANGE";
+  }
+  return "?";
+}
+
+Move Move::inverse() const {
+  Move r;
+  r.kind = reverse_of(kind);
+  r.units.reserve(units.size());
+  for (const auto& c : units) r.units.push_back({c.id, c.after, c.before});
+  for (const auto& c : doors) r.doors.push_back({c.id, c.after, c.before});
+  r.detail = detail;
+  r.detail.delta = -detail.delta;
+  return r;
+}
+
+namespace {
+
+template <class T, class Id>
+typename std::vector<T>::iterator lower(std::vector<T>& v, Id id) {
+  return std::lower_bound(v.begin(), v.end(), id, [](const T& a, Id b) { return a.id < b; });
+}
+
+template <class T, class Id>
+const T* find_sorted(const std::vector<T>& v, Id id) {
+  auto it = std::lower_bound(v.begin(), v.end(), id, [](const T& a, Id b) { return a.id < b; });
+  return (it != v.end() && it->id == id) ? &*it : nullptr;
+}
+
+[[noreturn]] void misfit(const char* what, std::uint32_t id) {
+  throw std::logic_error(std::string("World::apply: ") + what + " " + std::to_string(id));
+}
+
+}  // namespace
+
+const Unit* World::find_unit(UnitId id) const { return find_sorted(units_, id); }
+const Door* World::find_door(DoorId id) const { return find_sorted(doors_, id); }
+
+int World::door_count(UnitId id) const {
+  int n = 0;
+  for (const auto& d : doors_) n += (d.unit_a == id || d.unit_b == id) ? 1 : 0;
+  return n;
+}
+
+void World::apply(const Move& m) {
+  World w = *this;  // strong guarantee: *this is unchanged when the move does not fit
+  w.apply_in_place(m);
+  *this = std::move(w);
+}
+
+void World::apply_in_place(const Move& m) {
+  // Removals first (doors, then units), then additions (units, then doors).
+  for (const auto& c : m.doors) {
+    if (!c.before) continue;
+    auto it = lower(doors_, c.id);
+    if (it == doors_.end() || it->id != c.id) misfit("door to change is missing:", c.id);
+    doors_.erase(it);
+  }
+  for (const auto& c : m.units) {
+    if (!c.before) continue;
+    auto it = lower(units_, c.id);
+    if (it == units_.end() || it->id != c.id) misfit("unit to change is missing:", c.id);
+    units_.erase(it);
+  }
+  for (const auto& c : m.units) {
+    if (!c.after) continue;
+    if (c.after->id != c.id) misfit("unit change with mismatched id:", c.id);
+    auto it = lower(units_, c.id);
+    if (it != units_.end() && it->id == c.id) misfit("unit to add exists:", c.id);
+    units_.insert(it, *c.after);
+    next_unit_id_ = std::max(next_unit_id_, c.id + 1);
+  }
+  for (const auto& c : m.doors) {
+    if (!c.after) continue;
+    if (c.after->id != c.id) misfit("door change with mismatched id:", c.id);
+    if (!find_unit(c.after->unit_a) || !find_unit(c.after->unit_b))
+      misfit("door refers to an absent unit:", c.id);
+    auto it = lower(doors_, c.id);
+    if (it != doors_.end() && it->id == c.id) misfit("door to add exists:", c.id);
+    doors_.insert(it, *c.after);
+    next_door_id_ = std::max(next_door_id_, c.id + 1);
+  }
+  for (const auto& d : doors_) {
+    if (!find_unit(d.unit_a) || !find_unit(d.unit_b))
+      misfit("a removed unit still has door", d.id);
+  }
+}
+
+World World::applied(const Move& m) const {
+  World w = *this;
+  w.apply(m);
+  return w;
+}
+
+}  // namespace ksmc::stdlib::indoor
