@@ -1,0 +1,65 @@
+// The indoor result as plain data, filled by the domain binary after sampling and written by the
+// writers in this folder (world.json, labels.png, overlay.png, trace.png, scene.dot).
+//
+// Coordinates are continuous cell coordinates in the image convention of rect.h: x = column
+// (right), y = row (down), origin at the top-left pixel; integer coordinates are cell centres
+// (OpenCV's drawing convention), so the cell (c, r) spans [c - 0.5, c + 0.5) x [r - 0.5, r + 0.5).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "stdlib/indoor/io/occupancy_map.h"
+#include "stdlib/indoor/rect.h"
+
+namespace ksmc::stdlib::indoor::io {
+
+struct UnitResult {
+  int id = 0;                                 // > 0; 0 means "no unit" in labels.png and doors
+  std::string type;                           // "room", "corridor", "hall", "other"
+  std::map<std::string, double> type_probs;   // marginals of the type query atoms
+  std::array<Point2, 4> corners{};            // in order around the rectangle
+};
+
+struct DoorResult {
+  int id = 0;
+  int unit_a = 0;                    // the two units the door connects (0 = outside / none)
+  int unit_b = 0;
+  std::array<Point2, 2> segment{};   // end points of the door way
+};
+
+struct MapInfo {
+  std::string source;                // as given by the caller (written verbatim)
+  int width = 0;                     // cells (columns)
+  int height = 0;                    // cells (rows)
+  double resolution = 0.05;          // m per cell
+  Pose2 origin;
+  ClassCounts counts;
+};
+
+struct TraceSample {
+  std::int64_t iteration = 0;
+  double log_posterior = 0.0;
+  double acceptance_rate = 0.0;      // in [0, 1], e.g. over a sliding window
+};
+
+struct WorldResult {
+  MapInfo map;
+  std::vector<UnitResult> units;
+  std::vector<DoorResult> doors;
+  std::vector<std::pair<int, int>> adjacent;   // unit id pairs, written as given
+  // At least cell_prediction_rate, iterations, seconds, iterations_per_second, log_posterior.
+  // Integral values are written as JSON integers.
+  std::map<std::string, double> metrics;
+  std::vector<TraceSample> trace;              // for trace.png; not part of world.json
+};
+
+// Fills map info (size, resolution, origin, counts) from a loaded map; `source` is written
+// verbatim, so pass a relative path or file name for reproducible output.
+MapInfo map_info_of(const OccupancyMap& map, const std::string& source);
+
+}  // namespace ksmc::stdlib::indoor::io
