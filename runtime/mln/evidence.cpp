@@ -56,6 +56,86 @@ bool valid_name(std::string_view s) {
 
 }  // namespace
 
+namespace {
+
+struct ParsedAtom {
+  bool value = true;
+  std::string name;
+  std::vector<std::string> args;
+  std::string original;
+};
+
+// Parses one line; returns false for blank/comment lines. Throws on syntax errors.
+bool parse_line(std::string_view line, const std::string& where, ParsedAtom& out) {
+  if (const auto c = line.find("//"); c != std::string_view::npos) line = line.substr(0, c);
+  line = trim(line);
+  if (line.empty()) return false;
+  out.original = std::string(line);
+  out.value = true;
+  out.args.clear();
+  if (line.front() == '!') {
+    out.value = false;
+    line = trim(line.substr(1));
+  }
+  const auto open = line.find('(');
+  if (open == std::string_view::npos || line.back() != ')') {
+    throw MlnError(where + "malformed ground atom '" + out.original + "': expected name(arg, ...) or !name(arg, ...)");
+  }
+  out.name = std::string(trim(line.substr(0, open)));
+  if (!valid_name(out.name)) throw MlnError(where + "malformed ground atom '" + out.original + "': bad predicate name");
+  const std::string_view inner = line.substr(open + 1, line.size() - open - 2);
+  if (!trim(inner).empty()) {
+    std::size_t s = 0;
+    while (true) {
+      const auto comma = inner.find(',', s);
+      out.args.emplace_back(trim(inner.substr(s, comma == std::string_view::npos ? std::string_view::npos : comma - s)));
+      if (comma == std::string_view::npos) break;
+      s = comma + 1;
+    }
+  }
+  for (const auto& n : out.args) {
+    if (!valid_name(n)) throw MlnError(where + "malformed ground atom '" + out.original + "': bad argument '" + n + "'");
+  }
+  return true;
+}
+
+// Calls fn(where, atom, predicate) for every atom line, after the checks every pass shares.
+template <typename Fn>
+void for_each_atom(std::string_view text, const std::string& filename, const Program& program, Fn&& fn) {
+  std::int32_t line_no = 0;
+  std::size_t pos = 0;
+  ParsedAtom atom;
+  while (pos <= text.size()) {
+    const auto nl = text.find('\n', pos);
+    const std::string_view line =
+        text.substr(pos, nl == std::string_view::npos ? std::string_view::npos : nl - pos);
+    pos = nl == std::string_view::npos ? text.size() + 1 : nl + 1;
+    ++line_no;
+    const auto where = filename + ":" + std::to_string(line_no) + ": ";
+    if (!parse_line(line, where, atom)) continue;
+    const auto pred = program.find_predicate(atom.name);
+    if (!pred) throw MlnError(where + "unknown predicate '" + atom.name + "'");
+    const auto& p = program.predicates[*pred];
+    if (atom.args.size() != p.arg_types.size()) {
+      throw MlnError(where + "'" + atom.name + "' takes " + std::to_string(p.arg_types.size()) + " argument" +
+                     (p.arg_types.size() == 1 ? "" : "s") + ", got " + std::to_string(atom.args.size()));
+    }
+    fn(where, line_no, atom, *pred);
+  }
+}
+
+}  // namespace
+
+void collect_db_constants(std::string_view text, const std::string& filename, const Program& program,
+                          Domain& domain) {
+  if (domain.num_types() < program.types.size()) domain.resize(program.types.size());
+  for_each_atom(text, filename, program,
+                [&](const std::string&, std::int32_t, const ParsedAtom& atom, std::int32_t pred) {
+                  const auto& p = program.predicates[pred];
+                  for (std::size_t i = 0; i < atom.args.size(); ++i) domain.add(p.arg_types[i], atom.args[i]);
+                });
+}
+
 void parse_db(std::string_view text, const std::string& filename, const Program& program,
               const Domain& domain, Evidence& evidence, const DbOptions& options) {
   // Empty domains: a predicate over a type without constants cannot be grounded.
@@ -68,85 +148,44 @@ void parse_db(std::string_view text, const std::string& filename, const Program&
     }
   }
   std::map<std::pair<std::int32_t, std::int64_t>, std::int32_t> given_at;  // atom -> line
-  std::int32_t line_no = 0;
-  std::size_t pos = 0;
   std::vector<std::int32_t> args;
-  while (pos <= text.size()) {
-    const auto nl = text.find('\n', pos);
-    std::string_view line = text.substr(pos, nl == std::string_view::npos ? std::string_view::npos : nl - pos);
-    pos = nl == std::string_view::npos ? text.size() + 1 : nl + 1;
-    ++line_no;
-    const auto where = filename + ":" + std::to_string(line_no) + ": ";
-    if (const auto c = line.find("//"); c != std::string_view::npos) line = line.substr(0, c);
-    line = trim(line);
-    if (line.empty()) continue;
-    const std::string original(line);
-    bool value = true;
-    if (line.front() == '!') {
-      value = false;
-      line = trim(line.substr(1));
-    }
-    const auto open = line.find('(');
-    if (open == std::string_view::npos || line.back() != ')') {
-      throw MlnError(where + "malformed ground atom '" + original + "': expected name(arg, ...) or !name(arg, ...)");
-    }
-    const std::string name(trim(line.substr(0, open)));
-    if (!valid_name(name)) {
-      throw MlnError(where + "malformed ground atom '" + original + "': bad predicate name");
-    }
-    const auto pred = program.find_predicate(name);
-    if (!pred) throw MlnError(where + "unknown predicate '" + name + "'");
-    const auto& p = program.predicates[*pred];
+  for_each_atom(text, filename, program,
+                [&](const std::string& where, std::int32_t line_no, const ParsedAtom& atom, std::int32_t pred) {
+    const auto& p = program.predicates[pred];
     if (p.query && !p.query_evidence_allowed && !options.allow_all_query_evidence) {
-      throw MlnError(where + "'" + name + "' is a query predicate; its atoms cannot be given as evidence");
-    }
-    std::vector<std::string> names;
-    std::string_view inner = line.substr(open + 1, line.size() - open - 2);
-    if (!trim(inner).empty()) {
-      std::size_t s = 0;
-      while (true) {
-        const auto comma = inner.find(',', s);
-        names.emplace_back(trim(inner.substr(s, comma == std::string_view::npos ? std::string_view::npos : comma - s)));
-        if (comma == std::string_view::npos) break;
-        s = comma + 1;
-      }
-    }
-    for (const auto& n : names) {
-      if (!valid_name(n)) {
-        throw MlnError(where + "malformed ground atom '" + original + "': bad argument '" + n + "'");
-      }
-    }
-    if (names.size() != p.arg_types.size()) {
-      throw MlnError(where + "'" + name + "' takes " + std::to_string(p.arg_types.size()) + " argument" +
-                     (p.arg_types.size() == 1 ? "" : "s") + ", got " + std::to_string(names.size()));
+      throw MlnError(where + "'" + atom.name + "' is a query predicate; its atoms cannot be given as evidence");
     }
     args.clear();
-    for (std::size_t i = 0; i < names.size(); ++i) {
-      const auto c = domain.find(p.arg_types[i], names[i]);
+    for (std::size_t i = 0; i < atom.args.size(); ++i) {
+      const auto c = domain.find(p.arg_types[i], atom.args[i]);
       if (!c) {
-        throw MlnError(where + "unknown constant '" + names[i] + "' of type '" + program.types[p.arg_types[i]] +
-                       "' (argument " + std::to_string(i + 1) + " of '" + name + "')");
+        throw MlnError(where + "unknown constant '" + atom.args[i] + "' of type '" + program.types[p.arg_types[i]] +
+                       "' (argument " + std::to_string(i + 1) + " of '" + atom.name + "')");
       }
       args.push_back(*c);
     }
-    const auto flat = evidence.flat_index(*pred, args);
-    const auto old = evidence.get_flat(*pred, flat);
-    if (old != Evidence::kUnknown && (old != 0) != value) {
-      throw MlnError(where + "'" + original + "' contradicts line " +
-                     std::to_string(given_at[{*pred, flat}]) + " (the same atom given true and false)");
+    const auto flat = evidence.flat_index(pred, args);
+    const auto old = evidence.get_flat(pred, flat);
+    if (old != Evidence::kUnknown && (old != 0) != atom.value) {
+      throw MlnError(where + "'" + atom.original + "' contradicts line " + std::to_string(given_at[{pred, flat}]) +
+                     " (the same atom given true and false)");
     }
-    given_at.emplace(std::make_pair(*pred, flat), line_no);
-    evidence.set_flat(*pred, flat, value ? 1 : 0);
-  }
+    given_at.emplace(std::make_pair(pred, flat), line_no);
+    evidence.set_flat(pred, flat, atom.value ? 1 : 0);
+  });
 }
 
-void read_db_file(const std::string& path, const Program& program, const Domain& domain, Evidence& evidence,
-                  const DbOptions& options) {
+std::string read_text_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw MlnError(path + ": cannot open evidence file");
   std::ostringstream ss;
   ss << in.rdbuf();
-  parse_db(ss.str(), path, program, domain, evidence, options);
+  return ss.str();
+}
+
+void read_db_file(const std::string& path, const Program& program, const Domain& domain, Evidence& evidence,
+                  const DbOptions& options) {
+  parse_db(read_text_file(path), path, program, domain, evidence, options);
 }
 
 }  // namespace ksmc::runtime::mln

@@ -52,6 +52,12 @@ struct DbOptions {
 // at least one constant.
 void parse_db(std::string_view text, const std::string& filename, const Program& program,
               const Domain& domain, Evidence& evidence, const DbOptions& options = {});
+// Adds every constant named in `.db` text to `domain` (Alchemy-style domains taken
+// from the evidence); checks syntax, predicate names and arities on the way.
+void collect_db_constants(std::string_view text, const std::string& filename, const Program& program,
+                          Domain& domain);
+// Reads a whole file; a missing file is an MlnError naming it.
+std::string read_text_file(const std::string& path);
 // Reads the file and calls parse_db; a missing file is an MlnError naming it.
 void read_db_file(const std::string& path, const Program& program, const Domain& domain,
                   Evidence& evidence, const DbOptions& options = {});

@@ -48,6 +48,8 @@ ComponentResult closed_form_single(const GroundNetwork& net) {
     throw MlnError("exact inference: no state satisfies the hard clauses (" +
                    describe_hard_origins(net) + ") over " + net.label_name(0));
   }
+  r.mode = {static_cast<std::uint8_t>(allow1 && (!allow0 || s1 > s0) ? 1 : 0)};
+  r.mode_log_weight = r.mode[0] ? s1 : s0;
   if (!allow0) {
     r.marginals = {1.0};
     r.log_z = s1;
@@ -113,6 +115,7 @@ ComponentResult enumerate_network(const GroundNetwork& net) {
 
   double z = 0.0, s = 0.0, max_s = kNegInf;
   std::int32_t violated = 0;
+  std::vector<std::uint8_t> mode;
 
   auto flip = [&](AtomId a) {
     const std::uint8_t nv = val[a] ? 0 : 1;
@@ -158,7 +161,10 @@ ComponentResult enumerate_network(const GroundNetwork& net) {
     while (true) {
       if (violated == 0) {
         z += std::exp(s - shift);
-        if (s > max_s) max_s = s;
+        if (s > max_s) {
+          max_s = s;
+          mode = val;
+        }
       }
       const std::int32_t j = focus[0];
       focus[0] = 0;
@@ -196,6 +202,25 @@ ComponentResult enumerate_network(const GroundNetwork& net) {
   r.marginals.resize(static_cast<std::size_t>(n));
   for (AtomId a = 0; a < n; ++a) r.marginals[a] = std::clamp(acc[a] / z, 0.0, 1.0);
   r.log_z = shift + std::log(z);
+  r.mode = mode;
+  r.mode_log_weight = max_s;
+  return r;
+}
+
+MapResult exact_map(const GroundNetwork& net, const ExactOptions& options) {
+  const auto comps = split_components(net);
+  for (const auto& comp : comps) {
+    if (component_state_bits(net, comp) > options.max_component_bits + 1e-9)
+      throw MlnError(too_large_message(net, comp, options));
+  }
+  MapResult r;
+  r.state.assign(static_cast<std::size_t>(net.num_atoms()), 0);
+  for (const auto& comp : comps) {
+    const auto cr = enumerate_network(extract_component(net, comp));
+    for (std::size_t i = 0; i < comp.atoms.size(); ++i) r.state[comp.atoms[i]] = cr.mode[i];
+  }
+  r.feasible = net.feasible(r.state);
+  r.log_weight = net.log_weight(r.state);
   return r;
 }
 

@@ -14,6 +14,7 @@
 #include "runtime/mln/components.h"
 #include "runtime/mln/ground_network.h"
 #include "runtime/mln/inference_result.h"
+#include "runtime/mln/maxwalksat.h"
 
 namespace ksmc::runtime::mln {
 
@@ -23,8 +24,10 @@ struct ExactOptions {
 };
 
 struct ComponentResult {
-  std::vector<double> marginals;  // local atom ids
-  double log_z = 0.0;             // without the network constant
+  std::vector<double> marginals;   // local atom ids
+  double log_z = 0.0;              // without the network constant
+  std::vector<std::uint8_t> mode;  // a most probable state (first found on ties)
+  double mode_log_weight = 0.0;    // its log-weight, without the network constant
 };
 
 // log2 of the number of states of a component (blocks count log2 k, atoms 1).
@@ -37,6 +40,10 @@ ComponentResult enumerate_network(const GroundNetwork& net);
 // Exact marginals and log Z of the whole network. Throws MlnError naming the
 // component size and its predicates when a component exceeds the limit.
 InferenceResult exact_inference(const GroundNetwork& net, const ExactOptions& options = {});
+
+// Exact MAP: the most probable state, assembled from per-component modes (same size
+// limit as exact_inference).
+MapResult exact_map(const GroundNetwork& net, const ExactOptions& options = {});
 
 // The message used when a component is too large (shared with the auto mode).
 std::string too_large_message(const GroundNetwork& net, const Component& comp,
