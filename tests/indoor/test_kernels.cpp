@@ -1,0 +1,257 @@
+// The five reversible kernel pairs: a forward proposal, its reverse proposed by the reverse
+// kernel on the proposed world, and the consistency of their log Q values (§3.5.3); plus the
+// empirical frequency of discrete proposals against exp(log_q_fwd).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <map>
+
+#include "stdlib/indoor/kernels.h"
+#include "tests/indoor/kernel_fixture.h"
+
+using namespace ksmc::stdlib::indoor;
+using namespace ksmc::tests::indoor;
+
+namespace {
+
+KernelParams params() {
+  KernelParams p;
+  p.min_size = 3.0;
+  return p;
+}
+
+// Same change up to unit ids: rects removed / added / modified and door segments match.
+bool equivalent(const Move& a, const Move& b) {
+  if (a.kind != b.kind || a.units.size() != b.units.size() || a.doors.size() != b.doors.size()) return false;
+  std::vector<bool> used(b.units.size(), false);
+  for (const auto& x : a.units) {
+    bool found = false;
+    for (std::size_t i = 0; i < b.units.size() && !found; ++i) {
+      const auto& y = b.units[i];
+      if (used[i] || x.before.has_value() != y.before.has_value() || x.after.has_value() != y.after.has_value())
+        continue;
+      if (x.before && !same_rect(x.before->rect, y.before->rect, 1e-6)) continue;
+      if (x.after && !same_rect(x.after->rect, y.after->rect, 1e-6)) continue;
+      used[i] = found = true;
+    }
+    if (!found) return false;
+  }
+  for (std::size_t i = 0; i < a.doors.size(); ++i) {
+    const auto& x = a.doors[i];
+    const auto& y = b.doors[i];
+    const auto& dx = x.before ? *x.before : *x.after;
+    const auto& dy = y.before ? *y.before : *y.after;
+    if (distance(dx.a, dy.a) > 1e-6 || distance(dx.b, dy.b) > 1e-6) return false;
+  }
+  return true;
+}
+
+// First proposal (over seeds) accepted by `want` with a finite reverse probability.
+std::optional<Proposal> find(const KernelSet& ks, KernelKind k, const World& w,
+                             const std::function<bool(const Proposal&)>& want, int tries = 5000) {
+  for (int seed = 0; seed < tries; ++seed) {
+    Rng rng(static_cast<std::uint64_t>(seed) * 7919u + 1u);
+    auto p = ks.propose(k, w, rng);
+    if (p && std::isfinite(p->log_q_bwd) && want(*p)) return p;
+  }
+  return std::nullopt;
+}
+
+// The reverse kernel proposes the inverse on W' (found by sampling) and the log Q values agree.
+void check_round_trip(const KernelSet& ks, KernelKind k, const World& w,
+                      const std::function<bool(const Proposal&)>& want = [](const Proposal&) { return true; }) {
+  INFO("kernel " << kernel_name(k));
+  const auto p = find(ks, k, w, want);
+  REQUIRE(p);
+  CHECK(std::isfinite(p->log_q_fwd));
+  // The sampling path's probability equals the kernel's evaluation of the same move.
+  CHECK(ks.log_q(k, w, p->move) == Approx(p->log_q_fwd).epsilon(1e-12));
+  const World next = w.applied(p->move);
+  const Move inv = p->move.inverse();
+  const auto r = find(ks, reverse_of(k), next, [&](const Proposal& q) { return equivalent(q.move, inv); });
+  REQUIRE(r);
+  CHECK(r->log_q_fwd == Approx(p->log_q_bwd).epsilon(1e-9));
+  CHECK(r->log_q_bwd == Approx(p->log_q_fwd).epsilon(1e-9));
+  // Applying the reverse restores the original geometry.
+  const World back = next.applied(r->move);
+  REQUIRE(back.units().size() == w.units().size());
+  for (const Unit& u : w.units()) {
+    bool found = false;
+    for (const Unit& v : back.units()) found = found || same_rect(u.rect, v.rect, 1e-6);
+    CHECK(found);
+  }
+  CHECK(back.doors().size() == w.doors().size());
+}
+
+// For continuous kernels: the reverse kernel's score of the exact inverse move.
+void check_inverse_scored(const KernelSet& ks, KernelKind k, const World& w,
+                          const std::function<bool(const Proposal&)>& want = [](const Proposal&) { return true; }) {
+  INFO("kernel " << kernel_name(k));
+  const auto p = find(ks, k, w, want);
+  REQUIRE(p);
+  CHECK(ks.log_q(k, w, p->move) == Approx(p->log_q_fwd).epsilon(1e-12));
+  const World next = w.applied(p->move);
+  const Move inv = p->move.inverse();
+  CHECK(ks.log_q(reverse_of(k), next, inv) == Approx(p->log_q_bwd).epsilon(1e-12));
+  // Reverse of the reverse on the original world is the forward move again.
+  CHECK(ks.log_q(k, w, inv.inverse()) == Approx(p->log_q_fwd).epsilon(1e-12));
+  const World back = next.applied(inv);
+  for (const Unit& u : w.units()) CHECK(same_rect(u.rect, back.find_unit(u.id)->rect, 1e-9));
+}
+
+}  // namespace
+
+TEST_CASE("ADD / REMOVE round trip and proposal frequencies", "[indoor][kernels]") {
+  KernelFixture fx;
+  KernelSet ks(fx.evidence, fx.sources(), params());
+  const World w = world_of({fx.unit(1, fx.rooms[0]), fx.unit(2, fx.rooms[3])});
+  check_round_trip(ks, KernelKind::Add, w);
+  check_round_trip(ks, KernelKind::Remove, w);
+
+  // Empirical frequencies of REMOVE choices match exp(log_q_fwd).
+  const World w3 = world_of({fx.unit(1, fx.rooms[0]), fx.unit(2, fx.rooms[1]), fx.unit(3, fx.rooms[3]),
+                             fx.evidence.make_unit(4, OrientedRect{60, 30, 30, 20, 0.3})});
+  std::map<UnitId, int> count;
+  std::map<UnitId, double> prob;
+  Rng rng(7);
+  const int n = 20000;
+  for (int i = 0; i < n; ++i) {
+    auto p = ks.propose(KernelKind::Remove, w3, rng);
+    REQUIRE(p);
+    ++count[p->move.units[0].id];
+    prob[p->move.units[0].id] = std::exp(p->log_q_fwd);
+  }
+  double total = 0.0;
+  for (const auto& [id, pr] : prob) {
+    total += pr;
+    CHECK(static_cast<double>(count[id]) / n == Approx(pr).margin(0.015));
+  }
+  CHECK(total == Approx(1.0).epsilon(1e-9));
+  // The badly matching rotated unit is the likeliest to be removed (b_r, eq. 3.21).
+  CHECK(prob[4] > prob[1]);
+}
+
+TEST_CASE("SPLIT / MERGE round trip", "[indoor][kernels]") {
+  KernelFixture fx;
+  KernelSet ks(fx.evidence, fx.sources(), params());
+  // A+B as one unit: SPLIT along x = 50 (the tilted line snaps to a perpendicular cut).
+  const World w = world_of({fx.unit(1, {10, 10, 80, 40}), fx.unit(2, fx.rooms[3])});
+  check_round_trip(ks, KernelKind::Split, w, [](const Proposal& p) { return p.move.units[0].id == 1; });
+  // MERGE of two exact halves whose boundary is a detected line (x = 80).
+  const World w2 = world_of({fx.unit(1, fx.rooms[1]), fx.unit(2, fx.rooms[2]), fx.unit(3, fx.rooms[3])});
+  check_round_trip(ks, KernelKind::Merge, w2, [](const Proposal& p) { return p.move.units[0].id != 3; });
+  // A + B tile a rectangle, but the only line near x = 50 is tilted and cuts at x = 50.25, so
+  // SPLIT cannot undo that merge: its reverse probability is zero (the move is always rejected).
+  const World w3 = world_of({fx.unit(1, fx.rooms[0]), fx.unit(2, fx.rooms[1]), fx.unit(3, fx.rooms[3])});
+  Rng rng(3);
+  int merges = 0;
+  for (int i = 0; i < 300; ++i) {
+    auto p = ks.propose(KernelKind::Merge, w3, rng);
+    if (!p) continue;
+    ++merges;
+    CHECK(std::isfinite(p->log_q_fwd));
+    CHECK(p->log_q_bwd == -std::numeric_limits<double>::infinity());
+  }
+  CHECK(merges > 0);
+}
+
+TEST_CASE("SHRINK / DILATE inverse moves are scored consistently", "[indoor][kernels]") {
+  KernelFixture fx;
+  KernelSet ks(fx.evidence, fx.sources(), params());
+  const World w = world_of({fx.unit(1, {12, 12, 47, 37}), fx.unit(2, fx.rooms[3]),
+                            fx.evidence.make_unit(3, OrientedRect{95, 25, 20, 16, 0.4})});
+  check_inverse_scored(ks, KernelKind::Shrink, w);
+  check_inverse_scored(ks, KernelKind::Dilate, w);
+  check_inverse_scored(ks, KernelKind::Dilate, w, [](const Proposal& p) { return p.move.units[0].id == 3; });
+  // SHRINK only shrinks, DILATE only grows.
+  Rng rng(5);
+  for (int i = 0; i < 200; ++i) {
+    auto s = ks.propose(KernelKind::Shrink, w, rng);
+    if (s) CHECK(s->move.units[0].after->rect.area() < s->move.units[0].before->rect.area());
+    auto d = ks.propose(KernelKind::Dilate, w, rng);
+    if (d) CHECK(d->move.units[0].after->rect.area() > d->move.units[0].before->rect.area());
+  }
+}
+
+TEST_CASE("ALLOCATE / DELETE round trip", "[indoor][kernels]") {
+  KernelFixture fx;
+  KernelSet ks(fx.evidence, fx.sources(), params());
+  World w = world_of({fx.unit(1, fx.rooms[0]), fx.unit(2, fx.rooms[1]), fx.unit(3, fx.rooms[2]),
+                      fx.unit(4, fx.rooms[3])});
+  check_round_trip(ks, KernelKind::Allocate, w);
+  // The A-B door attaches to units 1 and 2.
+  const auto p = find(ks, KernelKind::Allocate, w, [](const Proposal& q) {
+    return std::abs(q.move.doors[0].after->a.x - 50.0) < 1e-9;
+  });
+  REQUIRE(p);
+  CHECK(p->move.doors[0].after->unit_a == 1);
+  CHECK(p->move.doors[0].after->unit_b == 2);
+  w.apply(p->move);
+  check_round_trip(ks, KernelKind::Delete, w);
+  // A unit with a door is locked against structural moves.
+  Rng rng(11);
+  for (int i = 0; i < 200; ++i) {
+    auto r = ks.propose(KernelKind::Remove, w, rng);
+    if (r) CHECK((r->move.units[0].id != 1 && r->move.units[0].id != 2));
+  }
+  // The candidate off every shared wall never becomes a door.
+  for (int i = 0; i < 300; ++i) {
+    auto a = ks.propose(KernelKind::Allocate, w, rng);
+    if (a) CHECK(std::abs(a->move.doors[0].after->a.y - 5.0) > 1e-9);
+  }
+}
+
+TEST_CASE("INTERCHANGE swap and shift are their own reverse", "[indoor][kernels]") {
+  KernelFixture fx;
+  KernelSet ks(fx.evidence, fx.sources(), params());
+  // L-shape: A tall on the left, B short on the right, tops aligned.
+  const World w = world_of({fx.unit(1, {10, 10, 50, 40}), fx.unit(2, {50, 10, 90, 25})});
+  check_round_trip(ks, KernelKind::Interchange, w, [](const Proposal& p) { return p.move.detail.variant == 1; });
+  const auto p = find(ks, KernelKind::Interchange, w, [](const Proposal& q) { return q.move.detail.variant == 1; });
+  REQUIRE(p);
+  // After the swap: unit 1 is the lower part of the old A, unit 2 the full-width band.
+  const World next = w.applied(p->move);
+  CHECK(same_rect(next.find_unit(1)->rect, room_rect({10, 25, 50, 40})));
+  CHECK(same_rect(next.find_unit(2)->rect, room_rect({10, 10, 90, 25})));
+  check_inverse_scored(ks, KernelKind::Interchange, w, [](const Proposal& q) { return q.move.detail.variant == 0; });
+  // Units that share no wall are never restructured.
+  const World apart = world_of({fx.unit(1, {10, 10, 40, 40}), fx.unit(2, {60, 10, 90, 40})});
+  Rng rng(2);
+  for (int i = 0; i < 100; ++i) CHECK_FALSE(ks.propose(KernelKind::Interchange, apart, rng));
+}
+
+TEST_CASE("dominant orientation biases ADD without forbidding other orientations", "[indoor][kernels]") {
+  KernelFixture fx;
+  KernelParams p = params();
+  KernelSet plain(fx.evidence, fx.sources(), p);
+  p.orientation.enabled = true;
+  p.orientation.dominant = 0.0;
+  KernelSet biased(fx.evidence, fx.sources(), p);
+  const World w;
+  Move add_rotated;
+  add_rotated.kind = KernelKind::Add;
+  const Unit rot = fx.evidence.make_unit(1, OrientedRect{60, 30, 30, 20, 0.3});
+  add_rotated.units.push_back({1, std::nullopt, rot});
+  const double lp = plain.log_q(KernelKind::Add, w, add_rotated);
+  const double lb = biased.log_q(KernelKind::Add, w, add_rotated);
+  CHECK(std::isfinite(lb));
+  CHECK(lb < lp);
+  Move add_room = add_rotated;
+  add_room.units[0].after = fx.unit(1, fx.rooms[0]);
+  CHECK(biased.log_q(KernelKind::Add, w, add_room) > plain.log_q(KernelKind::Add, w, add_room));
+}
+
+TEST_CASE("kernels decline on worlds they cannot change", "[indoor][kernels]") {
+  KernelFixture fx;
+  KernelSet ks(fx.evidence, fx.sources(), params());
+  const World empty;
+  Rng rng(1);
+  for (KernelKind k : {KernelKind::Remove, KernelKind::Split, KernelKind::Merge, KernelKind::Shrink,
+                       KernelKind::Dilate, KernelKind::Allocate, KernelKind::Delete, KernelKind::Interchange})
+    CHECK_FALSE(ks.propose(k, empty, rng));
+  CHECK(ks.propose(KernelKind::Add, empty, rng));
+  KernelSet none(fx.evidence, KernelSources{}, params());
+  CHECK_FALSE(none.propose(KernelKind::Add, empty, rng));
+}
