@@ -1,0 +1,48 @@
+// Table-top inference result and the scene graph read from it (seed §4.10):
+// per-object query probabilities with 0.4 / 0.6 decisions, stable support edges
+// (rule r10: stable(a) ∧ stable(b) ∧ contact(a,b) ∧ higher(a,b)) and the remaining,
+// unstable contacts.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "stdlib/tabletop/evidence.h"
+#include "stdlib/tabletop/scene.h"
+
+namespace ksmc::stdlib::tabletop {
+
+struct ObjectProbabilities {
+  double false_prob = 0.0;   // P(false(o) | evidence)
+  double hidden_prob = 0.0;  // P(hidden(o) | evidence)
+};
+
+// Input of the writers.
+struct TabletopResult {
+  Scene scene;
+  std::vector<ObjectProbabilities> probabilities;  // one per scene.objects entry, same order
+  Evidence evidence;                               // extract_evidence(scene, ...)
+};
+
+// Seed §4.10.1: true above 0.6, false below 0.4, no decision (nullopt) in between.
+std::optional<bool> decide(double probability);
+
+using Edge = std::pair<std::string, std::string>;
+// [upper, lower] pairs of stable support, sorted by (upper, lower).
+std::vector<Edge> support_edges(const Evidence& ev);
+// Contacts that are not stable support, each unordered pair once as [min, max] by id, sorted.
+std::vector<Edge> unstable_contact_edges(const Evidence& ev);
+
+// Throws std::invalid_argument when probabilities / evidence do not match the scene.
+void validate_result(const TabletopResult& result);
+
+// {"objects":[{"id","pose","stable","false_prob","hidden_prob","false","hidden"}],
+//  "support":[[upper,lower]],"contact":[[a,b]]}; "pose" is in the camera frame
+// ({"t":[x,y,z],"q":[w,x,y,z]}, as in scene.json).
+nlohmann::json scene_graph_json(const TabletopResult& result);
+
+}  // namespace ksmc::stdlib::tabletop
