@@ -1,0 +1,65 @@
+#include "runtime/mln/inference.h"
+
+#include "runtime/mln/components.h"
+#include "runtime/mln/error.h"
+
+namespace ksmc::runtime::mln {
+
+Method parse_method(const std::string& name) {
+  if (name == "exact") return Method::Exact;
+  if (name == "gibbs") return Method::Gibbs;
+  if (name == "mcsat") return Method::McSat;
+  if (name == "auto") return Method::Auto;
+  throw MlnError("unknown inference method '" + name + "' (expected exact, gibbs, mcsat or auto)");
+}
+
+InferenceResult infer(const GroundNetwork& net, const InferenceOptions& options) {
+  switch (options.method) {
+    case Method::Exact:
+      return exact_inference(net, options.exact);
+    case Method::Gibbs:
+    case Method::McSat: {
+      InferenceResult r = options.method == Method::Gibbs ? gibbs_sampling(net, options.gibbs)
+                                                          : mc_sat(net, options.mcsat);
+      if (options.compute_log_z) {
+        const auto lz = log_partition(net, options.log_z);
+        r.log_z = lz.log_z;
+        r.log_z_exact = lz.exact;
+      }
+      return r;
+    }
+    case Method::Auto:
+      break;
+  }
+  const auto comps = split_components(net);
+  InferenceResult r;
+  r.marginals.assign(static_cast<std::size_t>(net.num_atoms()), 0.0);
+  r.log_z = net.constant();
+  r.log_z_exact = true;
+  bool sampled = false;
+  for (std::size_t i = 0; i < comps.size(); ++i) {
+    const auto& comp = comps[i];
+    const GroundNetwork sub = extract_component(net, comp);
+    if (component_state_bits(net, comp) <= options.exact.max_component_bits + 1e-9) {
+      const auto cr = enumerate_network(sub);
+      for (std::size_t k = 0; k < comp.atoms.size(); ++k) r.marginals[comp.atoms[k]] = cr.marginals[k];
+      r.log_z += cr.log_z;
+      continue;
+    }
+    sampled = true;
+    McSatOptions mo = options.mcsat;
+    mo.seed = options.mcsat.seed * 1000003ULL + i;
+    const auto sr = mc_sat(sub, mo);
+    for (std::size_t k = 0; k < comp.atoms.size(); ++k) r.marginals[comp.atoms[k]] = sr.marginals[k];
+    r.samples = std::max(r.samples, sr.samples);
+    if (options.compute_log_z) {
+      r.log_z += ais_log_z(sub, options.log_z, options.log_z.seed * 1000003ULL + i).first;
+      r.log_z_exact = false;
+    }
+  }
+  if (sampled && !options.compute_log_z) r.log_z = std::numeric_limits<double>::quiet_NaN();
+  r.method = sampled ? "auto(exact+mcsat)" : "auto(exact)";
+  return r;
+}
+
+}  // namespace ksmc::runtime::mln

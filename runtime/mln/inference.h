@@ -1,0 +1,32 @@
+// One entry point over all engines: exact, gibbs, mcsat, or auto (exact for every
+// component small enough, MC-SAT for the rest; log Z exact or AIS-estimated per
+// component). MAP is separate: max_walksat() or exact_map().
+#pragma once
+
+#include <string>
+
+#include "runtime/mln/exact.h"
+#include "runtime/mln/gibbs.h"
+#include "runtime/mln/inference_result.h"
+#include "runtime/mln/log_z.h"
+#include "runtime/mln/mcsat.h"
+
+namespace ksmc::runtime::mln {
+
+enum class Method { Exact, Gibbs, McSat, Auto };
+
+// "exact", "gibbs", "mcsat", "auto"; throws MlnError otherwise.
+Method parse_method(const std::string& name);
+
+struct InferenceOptions {
+  Method method = Method::Auto;
+  ExactOptions exact;
+  GibbsOptions gibbs;
+  McSatOptions mcsat;
+  LogZOptions log_z;          // used by auto (and by gibbs/mcsat when compute_log_z)
+  bool compute_log_z = true;  // auto: exact or AIS per component; gibbs/mcsat: AIS
+};
+
+InferenceResult infer(const GroundNetwork& net, const InferenceOptions& options = {});
+
+}  // namespace ksmc::runtime::mln
