@@ -24,7 +24,11 @@ double log_candidate_mass(const Context& c, std::span<const CandidateUnit> cands
   double total = 0.0, mass = 0.0;
   for (std::size_t i = 0; i < cands.size(); ++i) {
     total += w[i];
-    if (w[i] > 0.0 && same_rect(cands[i].rect, r, c.p.coincide)) mass += w[i];
+    if (!(w[i] > 0.0)) continue;
+    // Same rectangles share their centre: a cheap test before comparing corners.
+    if (std::abs(cands[i].rect.cx - r.cx) > c.p.coincide || std::abs(cands[i].rect.cy - r.cy) > c.p.coincide)
+      continue;
+    if (same_rect(cands[i].rect, r, c.p.coincide)) mass += w[i];
   }
   return (total > 0.0 && mass > 0.0) ? std::log(mass / total) : kNegInf;
 }
