@@ -207,3 +207,31 @@ TEST_CASE("real maps: FSU, RPB, split and doors on WBU output", "[real]") {
     CHECK(sec < 5.0);
   }
 }
+
+TEST_CASE("detectors are deterministic and survive units reaching outside the map", "[door][split][fsu]") {
+  const Scene s = office_scene();
+  const ClassGrid g = render(s, 20.0);
+  std::vector<OrientedRect> units;
+  for (const auto& r : s.rooms) units.push_back(expected_rect(s, r, 20.0));
+  const auto d1 = detect_doors(g, units), d2 = detect_doors(g, units);
+  REQUIRE(d1.size() == d2.size());
+  for (std::size_t i = 0; i < d1.size(); ++i) {
+    CHECK(d1[i].a.x == d2[i].a.x);
+    CHECK(d1[i].b.y == d2[i].b.y);
+    CHECK(d1[i].weight == d2[i].weight);
+  }
+  // A unit hanging far over the map border and a huge one: no crash, sensible output.
+  const OrientedRect outside{-50, -40, 200, 150, 0.3};
+  const OrientedRect huge{100, 100, 1e5, 1e5, 0.1};
+  CHECK_NOTHROW(detect_split_lines(g, outside));
+  CHECK_NOTHROW(detect_split_lines(g, huge));
+  units.push_back(outside);
+  CHECK_NOTHROW(detect_doors(g, units));
+  RpbParams rp;
+  rp.frame_deg = 20.0;
+  const Point2 robot = expected_point(s, {s.rooms[3].x0 + 10, s.rooms[3].y0 + 20}, 20.0);
+  const auto r1 = detect_rpb_unit(g, robot, rp), r2 = detect_rpb_unit(g, robot, rp);
+  REQUIRE(r1.has_value());
+  CHECK(r1->rect.cx == r2->rect.cx);
+  CHECK(r1->rect.w == r2->rect.w);
+}

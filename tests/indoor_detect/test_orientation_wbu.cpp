@@ -158,3 +158,54 @@ TEST_CASE("real maps: orientation and WBU smoke test", "[wbu][real]") {
     CHECK(s < 5.0);
   }
 }
+
+TEST_CASE("WBU also works in a second strong orientation", "[wbu]") {
+  // Two buildings on one canvas: a big room at 0 deg and a smaller one rotated by 30 deg.
+  Scene s1, s2;
+  s1.cols = s2.cols = 500;
+  s1.rows = s2.rows = 400;
+  s1.rooms = {{40, 100, 200, 300}};
+  s1.walls = {{40, 100, 200, 100}, {40, 300, 200, 300}, {40, 100, 40, 300}, {200, 100, 200, 300}};
+  s2.rooms = {{300, 150, 400, 250}};
+  s2.walls = {{300, 150, 400, 150}, {300, 250, 400, 250}, {300, 150, 300, 250}, {400, 150, 400, 250}};
+  const ClassGrid g1 = render(s1, 0.0), g2 = render(s2, 30.0);
+  ClassGrid g(g1.size(), static_cast<unsigned char>(Cell::Unknown));
+  for (int r = 0; r < g.rows; ++r)
+    for (int c = 0; c < g.cols; ++c) {
+      const auto a = Cell(g1(r, c)), b = Cell(g2(r, c));
+      if (a == Cell::Occupied || b == Cell::Occupied) g(r, c) = static_cast<unsigned char>(Cell::Occupied);
+      else if (a == Cell::Free || b == Cell::Free) g(r, c) = static_cast<unsigned char>(Cell::Free);
+    }
+
+  const auto res = detect_wbu_units(g);
+  REQUIRE(res.frames_deg.size() >= 2);
+  CHECK(angle_diff_mod90(res.frames_deg[0], 0.0) < 1.0);
+  CHECK(angle_diff_mod90(res.frames_deg[1], 30.0) < 1.0);
+  for (const auto& [scene, deg] : {std::pair{&s1, 0.0}, std::pair{&s2, 30.0}}) {
+    const OrientedRect want = expected_rect(*scene, scene->rooms[0], deg);
+    double best = 0.0;
+    for (const auto& c : res.candidates) best = std::max(best, iou(c.rect, want));
+    INFO("room at " << deg << " deg: best IoU " << best);
+    CHECK(best >= 0.8);
+  }
+  // Without secondary orientations the rotated room is missed.
+  WbuParams only_dominant;
+  only_dominant.secondary_orientations = false;
+  const auto res1 = detect_wbu_units(g, only_dominant);
+  REQUIRE(res1.frames_deg.size() == 1);
+  double best = 0.0;
+  for (const auto& c : res1.candidates) best = std::max(best, iou(c.rect, expected_rect(s2, s2.rooms[0], 30.0)));
+  CHECK(best < 0.8);
+}
+
+TEST_CASE("WBU rejects bad parameters", "[wbu]") {
+  const ClassGrid g = render(office_scene(), 0.0);
+  WbuParams p;
+  p.min_side = 0;
+  CHECK_THROWS_AS(detect_wbu_units(g, p), std::invalid_argument);
+  p = {};
+  p.max_candidates = 3;
+  const auto res = detect_wbu_units(g, p);
+  CHECK(res.candidates.size() == 3);
+  CHECK(res.enumerated >= 3);
+}

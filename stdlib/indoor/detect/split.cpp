@@ -70,8 +70,12 @@ std::vector<SplitLine> detect_split_lines(const ClassGrid& grid, const OrientedR
   const double ux0 = q.x - 0.5 * unit.w, uy0 = q.y - 0.5 * unit.h;  // unit box in the frame
   const double ux1 = q.x + 0.5 * unit.w, uy1 = q.y + 0.5 * unit.h;
   // Interior patch, local pixel (i, j) = frame point (px0 + i, py0 + j).
-  const double px0 = std::ceil(ux0 + p.margin), py0 = std::ceil(uy0 + p.margin);
-  const int pw = int(std::floor(ux1 - p.margin) - px0) + 1, ph = int(std::floor(uy1 - p.margin) - py0) + 1;
+  // Clipped to the frame canvas (the rotated map), so a unit reaching outside the map costs
+  // no more than the map itself.
+  const double px0 = std::max(0.0, std::ceil(ux0 + p.margin)), py0 = std::max(0.0, std::ceil(uy0 + p.margin));
+  const double px1 = std::min(double(f.size().width - 1), std::floor(ux1 - p.margin));
+  const double py1 = std::min(double(f.size().height - 1), std::floor(uy1 - p.margin));
+  const int pw = int(px1 - px0) + 1, ph = int(py1 - py0) + 1;
   std::vector<SplitLine> out;
   if (pw < 3 || ph < 3) return out;
   ClassGrid patch(ph, pw, static_cast<unsigned char>(Cell::Unknown));
