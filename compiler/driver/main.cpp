@@ -1,0 +1,220 @@
+// ksmc — the command line. Each subcommand is one entry of kCommands; a later stage adds
+// `emit`, `infer`, `build` and `--dump-ir` by adding entries here.
+#include <exception>
+#include <functional>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "compiler/ast/dump.h"
+#include "compiler/build/loader.h"
+#include "compiler/driver/pipeline.h"
+#include "compiler/fmt/formatter.h"
+#include "runtime/io/atomic_file.h"
+
+#ifndef KSMC_VERSION
+#define KSMC_VERSION "unknown"
+#endif
+
+namespace {
+
+using namespace ksmc::compiler;
+
+struct Invocation {
+  std::vector<std::string> files;
+  build::LoadOptions load;
+  bool dump_ast = false;
+  bool in_place = false;
+  bool check_only = false;  // fmt --check
+};
+
+struct Command {
+  const char* name;
+  const char* usage;
+  const char* summary;
+  std::function<int(Invocation&)> run;
+};
+
+constexpr int kExitOk = 0;
+constexpr int kExitErrors = 1;
+constexpr int kExitUsage = 2;
+constexpr int kExitInternal = 3;
+
+std::string plural(int n, const char* word) { return std::to_string(n) + " " + word + (n == 1 ? "" : "s"); }
+
+int cmd_check(Invocation& inv) {
+  int status = kExitOk;
+  for (const std::string& path : inv.files) {
+    diag::SourceManager sources;
+    diag::DiagEngine diags(sources);
+    driver::FrontendResult r = driver::run_frontend(path, inv.load, sources, diags);
+    const int errors = diags.error_count();
+    const int warnings = diags.warning_count();
+    diags.flush(std::cerr);
+    if (inv.dump_ast && r.loaded) ast::dump(r.program.modules.front(), std::cout);
+    if (errors == 0 && r.loaded) {
+      std::cout << path << ": ok" << (warnings > 0 ? " with " + plural(warnings, "warning") : std::string()) << " ("
+                << driver::summary(r.program.modules.front(), r.symbols) << ")\n";
+    } else {
+      std::cout << path << ": " << plural(errors, "error")
+                << (warnings > 0 ? ", " + plural(warnings, "warning") : std::string()) << "\n";
+      status = kExitErrors;
+    }
+  }
+  return status;
+}
+
+// Parse + build of the main file only (no includes, no checks).
+bool load_main(const std::string& path, Invocation& inv, ast::Program& program) {
+  diag::SourceManager sources;
+  diag::DiagEngine diags(sources);
+  build::LoadOptions opts = inv.load;
+  opts.follow_includes = false;
+  const bool ok = build::load_program(path, opts, sources, diags, program);
+  diags.flush(std::cerr);
+  return ok;
+}
+
+int cmd_fmt(Invocation& inv) {
+  if (!inv.in_place && !inv.check_only && inv.files.size() != 1) {
+    std::cerr << "ksmc fmt: give one FILE (or use --in-place / --check for several)\n";
+    return kExitUsage;
+  }
+  int status = kExitOk;
+  for (const std::string& path : inv.files) {
+    ast::Program program;
+    if (!load_main(path, inv, program)) {
+      status = kExitErrors;
+      continue;
+    }
+    const std::string text = fmt::format_module(program.modules.front());
+    if (inv.check_only || inv.in_place) {
+      std::string old;
+      std::string error;
+      build::read_file(path, old, error);
+      if (old == text) continue;
+      if (inv.check_only) {
+        std::cout << path << ": not formatted\n";
+        status = kExitErrors;
+      } else {
+        ksmc::runtime::io::write_file_atomic(path, text);
+      }
+    } else {
+      std::cout << text;
+    }
+  }
+  return status;
+}
+
+int cmd_dump_ast(Invocation& inv) {
+  int status = kExitOk;
+  for (const std::string& path : inv.files) {
+    ast::Program program;
+    if (!load_main(path, inv, program)) {
+      status = kExitErrors;
+      continue;
+    }
+    ast::dump(program.modules.front(), std::cout);
+  }
+  return status;
+}
+
+const std::vector<Command>& commands() {
+  static const std::vector<Command> kCommands{
+      {"check", "ksmc check [--dump-ast] [-I DIR] FILE...",
+       "check domain files; prints one summary line per file", cmd_check},
+      {"fmt", "ksmc fmt [--in-place | --check] FILE...", "print FILE in canonical layout (comments kept)", cmd_fmt},
+  };
+  return kCommands;
+}
+
+void print_help(std::ostream& out) {
+  out << "ksmc " << KSMC_VERSION << " - compiler for knowledge-supervised MCMC domain files\n\n"
+      << "usage:\n";
+  for (const Command& c : commands()) out << "  " << c.usage << "\n      " << c.summary << "\n";
+  out << "  ksmc --dump-ast FILE\n      print the syntax tree of FILE (no checks)\n"
+      << "  ksmc --list-passes\n      list the front-end passes in order\n\n"
+      << "options:\n"
+      << "  -I DIR        also search DIR for included files\n"
+      << "  --dump-ast    print the syntax tree (with check: after checking)\n"
+      << "  --in-place    fmt: rewrite the files instead of printing\n"
+      << "  --check       fmt: exit 1 and name the files that are not formatted\n"
+      << "  --help        this text\n"
+      << "  --version     print the version\n\n"
+      << "exit status: 0 ok, 1 errors in the input, 2 bad usage, 3 internal compiler error\n";
+}
+
+int run(int argc, char** argv) {
+  Invocation inv;
+  const Command* command = nullptr;
+  bool list_passes = false;
+  std::vector<std::string> args(argv + 1, argv + argc);
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "--help" || a == "-h") {
+      print_help(std::cout);
+      return kExitOk;
+    }
+    if (a == "--version") {
+      std::cout << "ksmc " << KSMC_VERSION << "\n";
+      return kExitOk;
+    }
+    if (a == "--dump-ast") {
+      inv.dump_ast = true;
+    } else if (a == "--in-place") {
+      inv.in_place = true;
+    } else if (a == "--check") {
+      inv.check_only = true;
+    } else if (a == "--list-passes") {
+      list_passes = true;
+    } else if (a == "-I") {
+      if (i + 1 >= args.size()) {
+        std::cerr << "ksmc: -I needs a directory\n";
+        return kExitUsage;
+      }
+      inv.load.include_dirs.push_back(args[++i]);
+    } else if (a.rfind("-I", 0) == 0 && a.size() > 2) {
+      inv.load.include_dirs.push_back(a.substr(2));
+    } else if (a.size() > 1 && a[0] == '-') {
+      std::cerr << "ksmc: unknown option '" << a << "' (see ksmc --help)\n";
+      return kExitUsage;
+    } else if (command == nullptr && inv.files.empty() && !inv.dump_ast) {
+      for (const Command& c : commands()) {
+        if (a == c.name) command = &c;
+      }
+      if (command == nullptr) {
+        std::cerr << "ksmc: unknown command '" << a << "' (see ksmc --help)\n";
+        return kExitUsage;
+      }
+    } else {
+      inv.files.push_back(a);
+    }
+  }
+  if (list_passes) {
+    for (const std::string& p : driver::pass_names()) std::cout << p << "\n";
+    return kExitOk;
+  }
+  if (command == nullptr && !inv.dump_ast) {
+    print_help(std::cerr);
+    return kExitUsage;
+  }
+  if (inv.files.empty()) {
+    std::cerr << "ksmc: no input files (see ksmc --help)\n";
+    return kExitUsage;
+  }
+  if (command == nullptr) return cmd_dump_ast(inv);
+  return command->run(inv);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {
+    std::cerr << "ksmc: internal compiler error: " << e.what() << "\n";
+  } catch (...) {
+    std::cerr << "ksmc: internal compiler error: unknown exception\n";
+  }
+  return kExitInternal;
+}

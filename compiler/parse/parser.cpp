@@ -1,0 +1,44 @@
+#include "compiler/parse/parser.h"
+
+#include <antlr4-runtime.h>
+
+#include "KsmLexer.h"
+#include "KsmParser.h"
+#include "compiler/parse/error_strategy.h"
+#include "compiler/parse/prescan.h"
+
+namespace ksmc::compiler::parse {
+
+ParsedFile::ParsedFile() = default;
+ParsedFile::~ParsedFile() {
+  // The tree is owned by the parser; destroy in reverse construction order.
+  parser.reset();
+  tokens.reset();
+  lexer.reset();
+  input.reset();
+}
+
+std::unique_ptr<ParsedFile> parse_text(int file, const std::string& text, diag::DiagEngine& diags) {
+  auto out = std::make_unique<ParsedFile>();
+  out->file = file;
+  if (!prescan(file, text, diags)) return out;
+
+  out->input = std::make_unique<antlr4::ANTLRInputStream>(text);
+  out->lexer = std::make_unique<ksmc_grammar::KsmLexer>(out->input.get());
+  out->lexer->removeErrorListeners();  // ERRCHAR makes the lexer total; the parser reports it
+  out->tokens = std::make_unique<antlr4::CommonTokenStream>(out->lexer.get());
+  out->parser = std::make_unique<ksmc_grammar::KsmParser>(out->tokens.get());
+  out->parser->removeErrorListeners();
+  out->parser->setErrorHandler(std::make_shared<FriendlyErrorStrategy>(file, diags));
+
+  const int before = diags.errors_in(file);
+  try {
+    out->tree = out->parser->file();
+  } catch (const antlr4::ParseCancellationException&) {
+    out->tree = nullptr;
+  }
+  out->ok = out->tree != nullptr && diags.errors_in(file) == before;
+  return out;
+}
+
+}  // namespace ksmc::compiler::parse

@@ -1,0 +1,91 @@
+// Ksm.g4 — grammar of the ksmc domain language (see docs/language.md).
+// The C++ parser generated from this file is checked in under grammar/generated/
+// together with a stamp holding this file's SHA-256 (see grammar/CMakeLists.txt).
+grammar Ksm;
+
+file : item* EOF ;
+
+item
+  : 'domain' IDENT ';'                                                   # domainItem
+  | 'include' STRING ';'                                                 # includeItem
+  | 'type' IDENT ('=' '{' IDENT (',' IDENT)* '}')? ';'                   # typeItem
+  | kind=('evidence' | 'query') predSig (',' predSig)* ';'               # predItem
+  | 'quantity' IDENT ('[' unitDef (',' unitDef)* ']')? ';'               # quantityItem
+  | 'value' IDENT (',' IDENT)* ';'                                       # valueItem
+  | 'extern' externKind qualName ('(' (param (',' param)*)? ')')?
+      ('->' typeRef)? ';'                                                # externItem
+  | ruleHead ruleBody '.'                                                # ruleItem
+  | 'model' IDENT '{' modelVar* '}'                                      # modelItem
+  | 'extract' atom '=' call ';'                                          # extractItem
+  | 'prior' priorForm ';'                                                # priorItem
+  | 'likelihood' call ';'                                                # likelihoodItem
+  | 'kernel' 'pair' IDENT '/' IDENT kernelParams? '=' call (',' call)* ';'  # kernelPairItem
+  | 'kernel' IDENT kernelParams? ('reverse' IDENT)? ('=' call (',' call)*)? ';' # kernelItem
+  | 'schedule' '{' scheduleRow* '}'                                      # scheduleItem
+  ;
+
+externKind : IDENT | 'prior' | 'likelihood' | 'kernel' ;
+predSig  : IDENT '(' predArg (',' predArg)* ')' ;
+predArg  : IDENT excl='!'? ;
+unitDef  : IDENT '=' number ;
+qualName : IDENT ('.' IDENT)* ;
+param    : IDENT ':' typeRef ('=' expr)? ;
+typeRef  : IDENT ('[' ']')*                                              # namedType
+         | 'set' '<' elem=(IDENT | 'query' | 'evidence') '>'             # setType
+         ;
+
+// ---- rules -----------------------------------------------------------------
+ruleHead : hard='hard'? (weightProb='prob' number ':' | weightRaw='w' number ':')? ;
+ruleBody : 'exactly' 'one' 'of' atom (',' atom)+                         # exactlyOneBody
+         | formula                                                       # formulaBody
+         ;
+formula     : implication ('<=>' implication)* ;
+implication : disjunction ('=>' disjunction)* ;
+disjunction : conjunction ('v' conjunction)* ;
+conjunction : unary ('^' unary)* ;
+unary       : '!' unary                                                  # notFormula
+            | 'exists' IDENT (',' IDENT)* ':' formula                    # existsFormula
+            | atom                                                       # atomFormula
+            | '(' formula ')'                                            # parenFormula
+            ;
+atom : IDENT '(' IDENT (',' IDENT)* ')' ;
+
+// ---- model, extraction, prior, likelihood, kernels, schedule --------------
+modelVar     : IDENT '[' index=IDENT? ']' ':' typeRef vmode=('fixed' | 'sampled') ';'
+             | IDENT ':' typeRef vmode=('fixed' | 'sampled') ';'
+             ;
+priorForm    : 'for' IDENT (',' IDENT)* ('where' condition ('and' condition)*)? ':' call
+             | call
+             ;
+condition    : IDENT '(' atom ')' op=('>' | '>=' | '<' | '<=') number    # probCondition
+             | neg='!'? atom                                             # atomCondition
+             ;
+kernelParams : '(' kparam (',' kparam)* ')' ;
+kparam       : IDENT ':' IDENT ;
+scheduleRow  : ('[' lo=number ',' hi=rangeEnd ')' ':')? '{' (scheduleEntry (',' scheduleEntry)*)? '}' ';'? ;
+rangeEnd     : number | 'inf' ;
+scheduleEntry: IDENT ':' number ;
+
+call : qualName ('(' (arg (',' arg)*)? ')')? ;
+arg  : (IDENT '=')? expr ;
+expr : number                                                            # numberExpr
+     | STRING                                                            # stringExpr
+     | ('true' | 'false')                                                # boolExpr
+     | 'inf'                                                             # infExpr
+     | IDENT '[' IDENT ']'                                               # indexExpr
+     | qualName '(' (arg (',' arg)*)? ')'                                # callExpr
+     | IDENT                                                             # nameExpr
+     | '[' (expr (',' expr)*)? ']'                                       # listExpr
+     | '{' (expr (',' expr)*)? '}'                                       # setExpr
+     ;
+number : '-'? NUMBER unit=IDENT? ;
+
+// ---- lexer -------------------------------------------------------------------
+NUMBER        : DIGIT+ ('.' DIGIT+)? ([eE] [+-]? DIGIT+)? ;
+IDENT         : [A-Za-z_] [A-Za-z_0-9]* ;
+STRING        : '"' (~["\\\r\n] | '\\' ~[\r\n])* '"' ;
+LINE_COMMENT  : '//' ~[\r\n]* -> channel(HIDDEN) ;
+BLOCK_COMMENT : '/*' .*? '*/' -> channel(HIDDEN) ;
+WS            : [ \t\r\n]+ -> skip ;
+ERRCHAR       : . ;
+fragment DIGIT : [0-9] ;
