@@ -1,0 +1,35 @@
+#include "stdlib/indoor/io/world_writer.h"
+
+#include <stdexcept>
+#include <string>
+#include <system_error>
+
+#include "stdlib/indoor/io/scene_dot.h"
+#include "stdlib/indoor/io/trace_plot.h"
+#include "stdlib/indoor/io/world_images.h"
+#include "stdlib/indoor/io/world_json.h"
+
+namespace ksmc::stdlib::indoor::io {
+
+WorldFiles write_world_outputs(const std::filesystem::path& dir, const OccupancyMap& map,
+                               const WorldResult& w) {
+  validate_world(w, true);
+  if (map.cols() != w.map.width || map.rows() != w.map.height) {
+    throw std::invalid_argument("world: map info says " + std::to_string(w.map.width) + "x" +
+                                std::to_string(w.map.height) + " but the map is " +
+                                std::to_string(map.cols()) + "x" + std::to_string(map.rows()));
+  }
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw std::runtime_error(dir.string() + ": cannot create output folder: " + ec.message());
+  WorldFiles f{dir / "world.json", dir / "labels.png", dir / "overlay.png", dir / "trace.png",
+               dir / "scene.dot"};
+  write_world_json(f.world_json, w);
+  write_labels_png(f.labels_png, w, map.rows(), map.cols());
+  write_overlay_png(f.overlay_png, map.grid, w);
+  write_trace_png(f.trace_png, w.trace);
+  write_scene_dot(f.scene_dot, w);
+  return f;
+}
+
+}  // namespace ksmc::stdlib::indoor::io

@@ -1,0 +1,21 @@
+// Writes the whole indoor result into a folder: world.json, labels.png, overlay.png, trace.png,
+// scene.dot — each atomically; identical input gives byte-identical files.
+#pragma once
+
+#include <filesystem>
+
+#include "stdlib/indoor/io/occupancy_map.h"
+#include "stdlib/indoor/io/world_result.h"
+
+namespace ksmc::stdlib::indoor::io {
+
+struct WorldFiles {
+  std::filesystem::path world_json, labels_png, overlay_png, trace_png, scene_dot;
+};
+
+// `dir` is created if missing. The map must have the size recorded in w.map (width x height).
+// Throws std::invalid_argument on an inconsistent result, std::runtime_error on I/O failure.
+WorldFiles write_world_outputs(const std::filesystem::path& dir, const OccupancyMap& map,
+                               const WorldResult& w);
+
+}  // namespace ksmc::stdlib::indoor::io
