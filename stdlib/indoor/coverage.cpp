@@ -71,6 +71,7 @@ int breaks(const RowSpan* spans, int n, int* out) {
 }  // namespace
 
 void CoverageGrid::bump(std::size_t idx, int lut_class, int d_area, int d_wall, int d_door) {
+  ++visited_;
   CellCounts& c = cells_[idx];
   const int k0 = key_of(c, obs_[idx]);
   const int g0 = gamma_of(c);

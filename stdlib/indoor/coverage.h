@@ -49,6 +49,8 @@ class CoverageGrid {
   void update_door(const SpanRaster* before, const SpanRaster* after);
 
   const Histogram& histogram() const { return hist_; }
+  // Cells visited by updates so far (each visit changes that cell's counts).
+  std::uint64_t cells_visited() const { return visited_; }
   // Sum over cells of max(sigma - 1, 0), sigma = number of units covering the cell (eq. 3.5).
   std::int64_t overlap() const { return overlap_; }
 
@@ -70,6 +72,7 @@ class CoverageGrid {
   std::vector<CellCounts> cells_;
   Histogram hist_{};
   std::int64_t overlap_ = 0;
+  std::uint64_t visited_ = 0;
 };
 
 }  // namespace ksmc::stdlib::indoor
