@@ -20,14 +20,16 @@ namespace ksmc::stdlib::tabletop {
 
 namespace {
 
-std::string quote(const std::string& s) {
-  std::string out = "\"";
+std::string escape(const std::string& s) {
+  std::string out;
   for (char c : s) {
     if (c == '"' || c == '\\') out += '\\';
     out += c;
   }
-  return out + "\"";
+  return out;
 }
+
+std::string quote(const std::string& s) { return "\"" + escape(s) + "\""; }
 
 std::filesystem::path find_on_path(const std::string& name) {
   const char* path = std::getenv("PATH");
@@ -55,12 +57,12 @@ std::string graph_dot(const TabletopResult& r) {
     const auto h = decide(p.hidden_prob);
     const char* fill = (f && *f) ? "#ff6666" : (h && *h) ? "#66ffff" : "#99dd99";
     out += fmt::format("  {} [label={}, fillcolor=\"{}\"];\n", quote(o.id),
-                       quote(fmt::format("{}\\nfalse {:.3f}  hidden {:.3f}", o.id, p.false_prob, p.hidden_prob)), fill);
+                       "\"" + escape(o.id) + fmt::format("\\nfalse {:.3f}  hidden {:.3f}\"", p.false_prob, p.hidden_prob), fill);
   }
   for (const auto& [upper, lower] : support_edges(r.evidence))
     out += fmt::format("  {} -> {};\n", quote(lower), quote(upper));
   for (const auto& [a, b] : unstable_contact_edges(r.evidence))
-    out += fmt::format("  {} -> {} [dir=none, style=dashed];\n", quote(a), quote(b));
+    out += fmt::format("  {} -> {} [dir=none, style=dashed, constraint=false];\n", quote(a), quote(b));
   out += "}\n";
   return out;
 }

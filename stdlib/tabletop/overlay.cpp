@@ -1,5 +1,7 @@
 #include "stdlib/tabletop/overlay.h"
 
+#include <filesystem>
+
 #include <fmt/format.h>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -21,7 +23,8 @@ cv::Mat render_overlay(const TabletopResult& r, std::vector<std::string>& warnin
   const Scene& s = r.scene;
   cv::Mat img;
   if (!s.image.empty()) {
-    img = cv::imread(s.image.string(), cv::IMREAD_COLOR);
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(s.image, ec)) img = cv::imread(s.image.string(), cv::IMREAD_COLOR);
     if (img.empty())
       warnings.push_back(fmt::format("{}: cannot read background image; using a blank canvas", s.image.string()));
     else if (img.cols != s.camera.width || img.rows != s.camera.height)
