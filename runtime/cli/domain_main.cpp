@@ -1,0 +1,233 @@
+#include "runtime/cli/domain_main.h"
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include "runtime/cli/file_hash.h"
+#include "runtime/cli/interrupt.h"
+#include "runtime/cli/progress.h"
+#include "runtime/cli/run_outputs.h"
+
+namespace ksmc::runtime::cli {
+
+namespace {
+
+struct CommonFlags {
+  std::uint64_t seed = 1;
+  std::uint64_t iterations = 0;
+  unsigned chains = 1;
+  unsigned threads = 0;
+  std::string out;
+  std::uint64_t samples = 0;
+  std::uint64_t thin = 1;
+  std::optional<std::uint64_t> burn_in;
+  bool trace = false;
+  std::uint64_t trace_every = 0;
+  bool quiet = false;
+  std::vector<std::string> inputs;
+};
+
+// Holds the domain flag values while CLI11 parses (std::map: stable addresses).
+struct DomainFlagStorage {
+  std::map<std::string, std::string> text;
+  std::map<std::string, bool> toggles;
+  std::map<std::string, CLI::Option*> options;
+};
+
+void add_domain_flags(CLI::App& app, const DomainSpec& spec, DomainFlagStorage& st) {
+  for (const DomainFlag& f : spec.flags) {
+    const std::string long_name = "--" + f.name;
+    CLI::Option* opt = nullptr;
+    if (f.kind == DomainFlag::Kind::toggle) {
+      opt = app.add_flag(long_name, st.toggles[f.name], f.help);
+    } else {
+      std::string& value = st.text[f.name];
+      value = f.default_value;
+      opt = app.add_option(long_name, value, f.help);
+      if (!f.default_value.empty()) opt->default_str(f.default_value);
+      if (f.kind == DomainFlag::Kind::integer) opt->type_name("INT");
+      if (f.kind == DomainFlag::Kind::real) opt->type_name("NUMBER");
+      if (f.kind == DomainFlag::Kind::path) opt->type_name("PATH");
+    }
+    if (f.required) opt->required();
+    opt->group(spec.name + " options");
+    st.options[f.name] = opt;
+  }
+}
+
+FlagValues collect_domain_flags(const DomainSpec& spec, const DomainFlagStorage& st) {
+  FlagValues v;
+  for (const DomainFlag& f : spec.flags) {
+    const bool given = st.options.at(f.name)->count() > 0;
+    if (f.kind == DomainFlag::Kind::toggle) {
+      v.set(f.name, st.toggles.at(f.name) ? "true" : "false", given);
+      continue;
+    }
+    const std::string& value = st.text.at(f.name);
+    if (!given && f.default_value.empty()) continue;
+    v.set(f.name, value, given);
+    // Check the kind now, so a bad value is a usage error before any work.
+    if (f.kind == DomainFlag::Kind::integer) (void)v.integer(f.name);
+    if (f.kind == DomainFlag::Kind::real) (void)v.real(f.name);
+  }
+  return v;
+}
+
+int usage_error(const CliStreams& io, const DomainSpec& spec, const std::string& msg) {
+  io.err << spec.name << ": error: " << msg << "\nRun with --help for more information.\n";
+  return kExitUsage;
+}
+
+int failure(const CliStreams& io, const DomainSpec& spec, const std::string& msg) {
+  io.err << spec.name << ": error: " << msg << '\n';
+  return kExitError;
+}
+
+}  // namespace
+
+int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec) {
+  const CliStreams io{std::cout, std::cerr, ::isatty(STDERR_FILENO) == 1};
+  return run_domain_main(argc, argv, spec, io);
+}
+
+int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, const CliStreams& io) {
+  CommonFlags cf;
+  cf.iterations = spec.default_iterations;
+  cf.out = spec.name + "_out";
+  DomainFlagStorage dst;
+
+  CLI::App app(spec.description, spec.name);
+  try {
+    app.set_version_flag("--version", fmt::format("{} {} (ksmc {})", spec.name, spec.version, ksmc_version()));
+    app.add_option("inputs", cf.inputs, spec.inputs_help)->type_name("INPUT");
+    app.add_option("--seed", cf.seed, "random seed; same seed, same result")->capture_default_str();
+    app.add_option("--iterations", cf.iterations, "iterations per chain")->capture_default_str();
+    app.add_option("--chains", cf.chains, "independent chains")->check(CLI::Range(1U, 4096U))->capture_default_str();
+    app.add_option("--threads", cf.threads, "threads for the chains (0 = one per core)")->capture_default_str();
+    app.add_option("--out", cf.out, "output folder (created if missing)")->type_name("DIR")->capture_default_str();
+    app.add_option("--samples", cf.samples, "posterior samples to store per chain (samples.jsonl)")->capture_default_str();
+    app.add_option("--thin", cf.thin, "iterations between stored samples")->check(CLI::PositiveNumber)->capture_default_str();
+    app.add_option("--burn-in", cf.burn_in, "iterations before samples are taken (default: half)");
+    app.add_flag("--trace", cf.trace, "write trace.csv (log posterior and acceptance rate per chain)");
+    app.add_option("--trace-every", cf.trace_every, "iterations between trace rows (default: iterations/1000)");
+    app.add_flag("--quiet,-q", cf.quiet, "no progress display");
+    add_domain_flags(app, spec, dst);
+  } catch (const CLI::Error& e) {
+    return failure(io, spec, fmt::format("bad flag table of domain '{}': {}", spec.name, e.what()));
+  }
+
+  FlagValues domain_flags;
+  try {
+    app.parse(argc, argv);
+    if (cf.inputs.size() < spec.min_inputs || cf.inputs.size() > spec.max_inputs) {
+      throw UsageError(spec.min_inputs == spec.max_inputs
+                           ? fmt::format("expected {} {}, got {}", spec.min_inputs, spec.inputs_help, cf.inputs.size())
+                           : fmt::format("expected {} to {} {}, got {}", spec.min_inputs, spec.max_inputs,
+                                         spec.inputs_help, cf.inputs.size()));
+    }
+    if (cf.burn_in && *cf.burn_in > cf.iterations) {
+      throw UsageError(fmt::format("--burn-in {} exceeds --iterations {}", *cf.burn_in, cf.iterations));
+    }
+    domain_flags = collect_domain_flags(spec, dst);
+  } catch (const CLI::CallForHelp&) {
+    io.out << app.help();
+    return kExitOk;
+  } catch (const CLI::CallForAllHelp&) {
+    io.out << app.help("", CLI::AppFormatMode::All);
+    return kExitOk;
+  } catch (const CLI::CallForVersion&) {
+    io.out << app.version() << '\n';
+    return kExitOk;
+  } catch (const CLI::ParseError& e) {
+    return usage_error(io, spec, e.what());
+  } catch (const UsageError& e) {
+    return usage_error(io, spec, e.what());
+  }
+
+  DomainInput input;
+  for (const auto& p : cf.inputs) input.inputs.emplace_back(p);
+  input.flags = domain_flags;
+  input.seed = cf.seed;
+  input.chains = cf.chains;
+  input.out_dir = cf.out;
+
+  DomainSetup setup;
+  try {
+    setup = spec.load(input);
+  } catch (const UsageError& e) {
+    return usage_error(io, spec, e.what());
+  } catch (const std::exception& e) {
+    return failure(io, spec, e.what());
+  }
+
+  std::unique_ptr<mcmc::Engine> engine;
+  std::optional<OutputDir> out;
+  RunInfo info;
+  try {
+    engine = std::make_unique<mcmc::Engine>(setup.model_factory, setup.kernels, setup.schedule);
+    for (const auto& p : input.inputs) info.inputs.push_back(hash_file(p));
+    for (const auto& p : setup.extra_inputs) info.inputs.push_back(hash_file(p));
+    out.emplace(input.out_dir);
+  } catch (const std::exception& e) {
+    return failure(io, spec, e.what());
+  }
+
+  mcmc::EngineConfig cfg;
+  cfg.iterations = cf.iterations;
+  cfg.seed = cf.seed;
+  cfg.chains = cf.chains;
+  cfg.threads = cf.threads;
+  cfg.burn_in = cf.burn_in.value_or(cf.iterations / 2);
+  cfg.samples = cf.samples;
+  cfg.thin = cf.thin;
+  if (cf.trace) cfg.trace_every = cf.trace_every != 0 ? cf.trace_every : std::max<std::uint64_t>(1, cf.iterations / 1000);
+  ProgressPrinter printer(io.err, io.tty);
+  if (!cf.quiet) cfg.progress = [&printer](const mcmc::Progress& p) { printer(p); };
+
+  InterruptGuard guard;
+  cfg.cancel = &InterruptGuard::flag();
+  mcmc::RunResult result;
+  try {
+    result = engine->run(cfg);
+  } catch (const std::exception& e) {
+    return failure(io, spec, e.what());
+  }
+  const bool interrupted = result.cancelled || InterruptGuard::interrupted();
+  if (interrupted) {
+    io.err << spec.name << ": interrupted after " << result.iterations << " iterations; writing outputs\n";
+  }
+
+  info.domain_name = spec.name;
+  info.domain_version = spec.version;
+  info.config = cfg;
+  info.domain_extra = setup.summary_extra.is_object() ? setup.summary_extra : nlohmann::json::object();
+  try {
+    if (setup.write_results) {
+      std::unique_ptr<mcmc::Model> best = setup.model_factory(static_cast<unsigned>(result.best_chain));
+      best->restore(result.best().best_state);
+      setup.write_results(result, *best, *out);
+    }
+    out->write("best_state.json", best_state_json(result).dump(2) + "\n");
+    if (cfg.trace_every != 0) out->write("trace.csv", trace_csv(result));
+    if (cfg.samples != 0) out->write("samples.jsonl", samples_jsonl(result));
+    info.outputs = out->written();
+    out->write("summary.json", make_summary(result, engine->schedule(), info).dump(2) + "\n");
+  } catch (const std::exception& e) {
+    return failure(io, spec, e.what());
+  }
+  if (!cf.quiet) {
+    io.err << fmt::format("{}: best log posterior {} (chain {}, iteration {}); outputs in {}\n", spec.name,
+                          result.best().best_log_posterior, result.best_chain, result.best().best_iteration,
+                          out->dir().string());
+  }
+  return interrupted ? kExitInterrupted : kExitOk;
+}
+
+}  // namespace ksmc::runtime::cli

@@ -1,0 +1,114 @@
+// What a domain binary supplies to the common CLI (run_domain_main, domain_main.h).
+//
+// Generated <domain>_main.cpp:
+//   int main(int argc, char** argv) {
+//     return ksmc::runtime::cli::run_domain_main(argc, argv, indoor_domain_spec());
+//   }
+// where indoor_domain_spec() names the domain, registers its own flags and gives `load`,
+// which reads the input file(s) and returns the model factory, kernels, schedule and
+// result writer.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <set>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "runtime/mcmc/engine.h"
+
+namespace ksmc::runtime::cli {
+
+// A command-line mistake: reported with the usage hint, exit code 2.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// A domain-specific flag, e.g. {"lut", "3x3 likelihood table (JSON)", "", Kind::path}.
+struct DomainFlag {
+  enum class Kind { text, integer, real, path, toggle };
+  std::string name;           // long name without dashes
+  std::string help;
+  std::string default_value;  // "" = none (toggles default to false)
+  Kind kind = Kind::text;
+  bool required = false;
+};
+
+// Values of the domain flags after parsing (defaults filled in), checked by kind.
+class FlagValues {
+ public:
+  bool has(const std::string& name) const;    // given, or has a default
+  bool given(const std::string& name) const;  // given on the command line
+  const std::string& text(const std::string& name) const;  // throws UsageError if absent
+  long long integer(const std::string& name) const;
+  double real(const std::string& name) const;
+  bool toggle(const std::string& name) const;
+
+  void set(const std::string& name, std::string value, bool given);
+
+ private:
+  std::map<std::string, std::string> values_;
+  std::set<std::string> given_;
+};
+
+// Everything `load` needs from the command line.
+struct DomainInput {
+  std::vector<std::filesystem::path> inputs;  // positional arguments, as given
+  FlagValues flags;
+  std::uint64_t seed = 1;
+  unsigned chains = 1;
+  std::filesystem::path out_dir;
+};
+
+// The output folder: every file written atomically (runtime/io/atomic_file.h).
+class OutputDir {
+ public:
+  explicit OutputDir(std::filesystem::path dir);  // creates it; throws naming the folder
+  void write(const std::string& name, std::string_view data);
+  void write(const std::string& name, std::span<const unsigned char> data);
+  std::filesystem::path path_of(const std::string& name) const { return dir_ / name; }
+  const std::filesystem::path& dir() const noexcept { return dir_; }
+  const std::vector<std::string>& written() const noexcept { return written_; }
+
+ private:
+  std::filesystem::path dir_;
+  std::vector<std::string> written_;
+};
+
+// What `load` returns.
+struct DomainSetup {
+  mcmc::ModelFactory model_factory;
+  mcmc::KernelList kernels;
+  mcmc::Schedule schedule;
+  // Further files the result depends on (e.g. the PGM named by a map YAML): hashed into
+  // summary.json next to the positional inputs.
+  std::vector<std::filesystem::path> extra_inputs;
+  // Writes the domain's results (world.json, images, ...). `best` is a fresh model of the
+  // best chain restored to the best state. Optional.
+  std::function<void(const mcmc::RunResult&, mcmc::Model& best, OutputDir& out)> write_results;
+  nlohmann::json summary_extra = nlohmann::json::object();  // copied under "domain" in summary.json
+};
+
+struct DomainSpec {
+  std::string name;         // "indoor"
+  std::string version;      // the domain's own version
+  std::string description;  // one line for --help
+  std::string inputs_help = "input file";
+  std::size_t min_inputs = 1;
+  std::size_t max_inputs = 1;
+  std::uint64_t default_iterations = 10000;
+  std::vector<DomainFlag> flags;
+  // Loads the input. Throw std::exception on bad input with a message naming the file
+  // and the place ("map.yaml:3: resolution must be positive"): exit code 1.
+  std::function<DomainSetup(const DomainInput&)> load;
+};
+
+}  // namespace ksmc::runtime::cli

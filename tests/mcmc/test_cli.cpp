@@ -1,0 +1,248 @@
+// (f) The common domain CLI on a toy domain: help, version, usage errors, input errors,
+// atomic outputs, summary.json, reproducibility, Ctrl-C.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "runtime/cli/domain_main.h"
+#include "runtime/cli/file_hash.h"
+#include "runtime/cli/run_outputs.h"
+#include "tests/mcmc/toy_domain.h"
+
+namespace fs = std::filesystem;
+namespace cli = ksmc::runtime::cli;
+using ksmc::tests::mcmc::toy_domain_spec;
+
+namespace {
+
+struct Run {
+  int code;
+  std::string out;
+  std::string err;
+};
+
+Run run(std::vector<std::string> args, bool tty = false) {
+  args.insert(args.begin(), "toy");
+  std::vector<const char*> argv;
+  for (const auto& a : args) argv.push_back(a.c_str());
+  std::ostringstream out;
+  std::ostringstream err;
+  const int code = cli::run_domain_main(static_cast<int>(argv.size()), argv.data(), toy_domain_spec(),
+                                        cli::CliStreams{out, err, tty});
+  return {code, out.str(), err.str()};
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream f(p, std::ios::binary);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+struct TempDir {
+  fs::path path;
+  explicit TempDir(const std::string& name) : path(fs::temp_directory_path() / ("ksmc_cli_" + name)) {
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  ~TempDir() { fs::remove_all(path); }
+  fs::path write(const std::string& name, const std::string& text) const {
+    std::ofstream(path / name) << text;
+    return path / name;
+  }
+};
+
+std::vector<std::string> files_in(const fs::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+}  // namespace
+
+TEST_CASE("cli: --help lists common and domain flags, exit 0") {
+  const Run r = run({"--help"});
+  CHECK(r.code == 0);
+  for (const char* s : {"--seed", "--iterations", "--chains", "--out", "--samples", "--thin", "--trace",
+                        "--quiet", "--version", "--start-override", "--interrupt-at", "two-bump"}) {
+    INFO(s);
+    CHECK(r.out.find(s) != std::string::npos);
+  }
+}
+
+TEST_CASE("cli: --version names the domain and ksmc versions") {
+  const Run r = run({"--version"});
+  CHECK(r.code == 0);
+  CHECK(r.out == "toy 1.2.3 (ksmc " + std::string(cli::ksmc_version()) + ")\n");
+  CHECK(cli::ksmc_version() == KSMC_EXPECTED_VERSION);
+}
+
+TEST_CASE("cli: usage errors exit 2 with a message") {
+  TempDir d("usage");
+  const auto in = d.write("toy.json", R"({"n": 20, "start": 3})");
+  const std::string out = (d.path / "out").string();
+  struct Case {
+    std::vector<std::string> args;
+    std::string message;
+  };
+  const std::vector<Case> cases = {
+      {{"--bogus", in.string()}, "--bogus"},
+      {{"--iterations", "many", in.string()}, "many"},
+      {{"--chains", "0", in.string()}, "chains"},
+      {{"--thin", "0", in.string()}, "thin"},
+      {{}, "expected 1 toy.json, got 0"},
+      {{in.string(), in.string()}, "expected 1 toy.json, got 2"},
+      {{"--start-override", "x", in.string()}, "--start-override: expected an integer, got 'x'"},
+      {{"--burn-in", "10", "--iterations", "5", in.string()}, "--burn-in 10 exceeds --iterations 5"},
+      {{"--start-override", "99", in.string()}, "start must be in [0, n)"},
+  };
+  for (const auto& c : cases) {
+    auto args = c.args;
+    args.insert(args.end(), {"--out", out, "--quiet"});
+    const Run r = run(args);
+    INFO(r.err);
+    CHECK(r.code == 2);
+    CHECK(r.err.find(c.message) != std::string::npos);
+    CHECK(r.err.find("--help") != std::string::npos);
+  }
+  CHECK_FALSE(fs::exists(out));  // nothing written on a usage error
+}
+
+TEST_CASE("cli: bad input and unwritable output exit 1 naming the file") {
+  TempDir d("errors");
+  const auto bad = d.write("bad.json", R"({"n": 20,, })");
+  Run r = run({bad.string(), "--out", (d.path / "o1").string(), "--quiet"});
+  CHECK(r.code == 1);
+  CHECK(r.err.find(bad.string() + ": invalid JSON") != std::string::npos);
+
+  const auto small = d.write("small.json", R"({"n": 1})");
+  r = run({small.string(), "--out", (d.path / "o2").string(), "--quiet"});
+  CHECK(r.code == 1);
+  CHECK(r.err.find("small.json: \"n\" must be at least 2") != std::string::npos);
+
+  r = run({(d.path / "missing.json").string(), "--out", (d.path / "o3").string(), "--quiet"});
+  CHECK(r.code == 1);
+  CHECK(r.err.find("missing.json: cannot open") != std::string::npos);
+
+  const auto good = d.write("toy.json", R"({"n": 20})");
+  const auto blocker = d.write("file", "not a folder");
+  r = run({good.string(), "--out", (blocker / "sub").string(), "--quiet", "--iterations", "10"});
+  CHECK(r.code == 1);
+  CHECK(r.err.find((blocker / "sub").string()) != std::string::npos);
+  CHECK(files_in(d.path) == std::vector<std::string>{"bad.json", "file", "small.json", "toy.json"});
+}
+
+TEST_CASE("cli: a full run writes complete outputs atomically and a correct summary") {
+  TempDir d("run");
+  const std::string input_text = R"({"n": 20, "start": 3})";
+  const auto in = d.write("toy.json", input_text);
+  const fs::path out = d.path / "out" / "nested";  // created if missing
+  const Run r = run({in.string(), "--seed", "5", "--iterations", "20000", "--chains", "2", "--samples", "10",
+                     "--thin", "100", "--trace", "--trace-every", "1000", "--out", out.string()});
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK(files_in(out) == std::vector<std::string>{"best_state.json", "samples.jsonl", "summary.json",
+                                                  "toy_result.json", "trace.csv"});  // no temporaries
+  CHECK(r.err.find("it/s") != std::string::npos);  // plain progress lines when not a TTY
+  CHECK(r.err.find('\r') == std::string::npos);
+
+  const auto s = nlohmann::json::parse(slurp(out / "summary.json"));
+  CHECK(s.at("ksmc_version") == std::string(cli::ksmc_version()));
+  CHECK(s.at("domain").at("name") == "toy");
+  CHECK(s.at("domain").at("version") == "1.2.3");
+  CHECK(s.at("domain").at("n") == 20);
+  CHECK(s.at("seed") == 5);
+  CHECK(s.at("chains") == 2);
+  CHECK(s.at("iterations") == 40000);
+  CHECK(s.at("iterations_per_chain") == 20000);
+  CHECK(s.at("burn_in") == 10000);
+  CHECK(s.at("samples") == 20);
+  CHECK(s.at("cancelled") == false);
+  CHECK(s.at("seconds").get<double>() > 0.0);
+  CHECK(s.at("iterations_per_second").get<double>() > 0.0);
+  CHECK(s.at("hash_algorithm") == "fnv1a-64");
+  REQUIRE(s.at("inputs").size() == 1);
+  CHECK(s.at("inputs")[0].at("path") == in.string());
+  CHECK(s.at("inputs")[0].at("bytes") == input_text.size());
+  CHECK(s.at("inputs")[0].at("fnv1a64") == fmt::format("{:016x}", cli::fnv1a64(input_text)));
+  CHECK(s.at("outputs") ==
+        nlohmann::json::array({"toy_result.json", "best_state.json", "trace.csv", "samples.jsonl"}));
+  std::uint64_t selected = 0;
+  std::vector<std::string> names;
+  for (const auto& k : s.at("kernels")) {
+    names.push_back(k.at("name"));
+    const auto sel = k.at("selected").get<std::uint64_t>();
+    selected += sel;
+    CHECK(k.at("proposed").get<std::uint64_t>() + k.at("declined").get<std::uint64_t>() == sel);
+    CHECK(k.at("accepted").get<std::uint64_t>() + k.at("rejected").get<std::uint64_t>() == sel);
+    CHECK(k.at("acceptance_rate").get<double>() ==
+          Approx(sel == 0 ? 0.0 : k.at("accepted").get<double>() / static_cast<double>(sel)));
+  }
+  CHECK(names == std::vector<std::string>{"UP", "DOWN", "RESAMPLE"});
+  CHECK(s.at("kernels")[0].at("reverse") == "DOWN");
+  CHECK(selected == 40000);
+  CHECK(s.at("chain_results").size() == 2);
+
+  const auto best = nlohmann::json::parse(slurp(out / "best_state.json"));
+  CHECK(best.at("state").at("x") == 4);  // the mode
+  CHECK(best.at("log_posterior") == s.at("best").at("log_posterior"));
+  CHECK(nlohmann::json::parse(slurp(out / "toy_result.json")).at("x") == 4);
+
+  std::istringstream samples(slurp(out / "samples.jsonl"));
+  int lines = 0;
+  for (std::string line; std::getline(samples, line); ++lines) {
+    const auto j = nlohmann::json::parse(line);
+    CHECK(j.at("iteration").get<std::uint64_t>() > 10000);
+    CHECK(j.at("state").contains("x"));
+  }
+  CHECK(lines == 20);
+  const std::string trace = slurp(out / "trace.csv");
+  CHECK(trace.rfind("chain,iteration,log_posterior,", 0) == 0);
+  CHECK(std::count(trace.begin(), trace.end(), '\n') == 1 + 2 * 20);
+}
+
+TEST_CASE("cli: same seed, same outputs; TTY progress bar") {
+  TempDir d("repro");
+  const auto in = d.write("toy.json", R"({"n": 20, "start": 0})");
+  auto args = [&](const std::string& o) {
+    return std::vector<std::string>{in.string(), "--seed", "77", "--iterations", "30000", "--chains", "3",
+                                    "--samples", "5", "--thin", "1000", "--trace", "--out", (d.path / o).string()};
+  };
+  const Run a = run(args("a"), true);
+  auto quiet = args("b");
+  quiet.push_back("--quiet");
+  const Run b = run(quiet);
+  REQUIRE(a.code == 0);
+  REQUIRE(b.code == 0);
+  CHECK(a.err.find('\r') != std::string::npos);  // the bar is redrawn in place
+  CHECK(b.err.empty());                          // --quiet
+  for (const char* f : {"best_state.json", "trace.csv", "samples.jsonl", "toy_result.json"}) {
+    INFO(f);
+    CHECK(slurp(d.path / "a" / f) == slurp(d.path / "b" / f));
+  }
+}
+
+TEST_CASE("cli: Ctrl-C stops the run, writes complete outputs, exit 130") {
+  TempDir d("interrupt");
+  const auto in = d.write("toy.json", R"({"n": 20})");
+  const fs::path out = d.path / "out";
+  const Run r = run({in.string(), "--iterations", "100000000", "--interrupt-at", "2000", "--samples", "3",
+                     "--burn-in", "0", "--trace", "--out", out.string(), "--quiet"});
+  CHECK(r.code == 130);
+  CHECK(r.err.find("interrupted") != std::string::npos);
+  REQUIRE(fs::exists(out / "summary.json"));
+  const auto s = nlohmann::json::parse(slurp(out / "summary.json"));
+  CHECK(s.at("cancelled") == true);
+  CHECK(s.at("iterations").get<std::uint64_t>() < 100000000);
+  CHECK(files_in(out) == std::vector<std::string>{"best_state.json", "samples.jsonl", "summary.json",
+                                                  "toy_result.json", "trace.csv"});
+}
