@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "runtime/mln/components.h"
@@ -40,6 +41,11 @@ ComponentResult enumerate_network(const GroundNetwork& net);
 // Exact marginals and log Z of the whole network. Throws MlnError naming the
 // component size and its predicates when a component exceeds the limit.
 InferenceResult exact_inference(const GroundNetwork& net, const ExactOptions& options = {});
+
+// Enumerates the given components of `net` in place (no size check): writes their
+// atoms' marginals into `marginals` (global ids, sized num_atoms) and returns the sum
+// of their log Z (without the network constant).
+double exact_components(const GroundNetwork& net, std::span<const Component> comps, std::vector<double>& marginals);
 
 // Exact MAP: the most probable state, assembled from per-component modes (same size
 // limit as exact_inference).

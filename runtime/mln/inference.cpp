@@ -37,16 +37,15 @@ InferenceResult infer(const GroundNetwork& net, const InferenceOptions& options)
   r.log_z = net.constant();
   r.log_z_exact = true;
   bool sampled = false;
+  std::vector<Component> small;
   for (std::size_t i = 0; i < comps.size(); ++i) {
     const auto& comp = comps[i];
-    const GroundNetwork sub = extract_component(net, comp);
     if (component_state_bits(net, comp) <= options.exact.max_component_bits + 1e-9) {
-      const auto cr = enumerate_network(sub);
-      for (std::size_t k = 0; k < comp.atoms.size(); ++k) r.marginals[comp.atoms[k]] = cr.marginals[k];
-      r.log_z += cr.log_z;
+      small.push_back(comp);
       continue;
     }
     sampled = true;
+    const GroundNetwork sub = extract_component(net, comp);
     McSatOptions mo = options.mcsat;
     mo.seed = options.mcsat.seed * 1000003ULL + i;
     const auto sr = mc_sat(sub, mo);
@@ -57,6 +56,7 @@ InferenceResult infer(const GroundNetwork& net, const InferenceOptions& options)
       r.log_z_exact = false;
     }
   }
+  r.log_z += exact_components(net, small, r.marginals);
   if (sampled && !options.compute_log_z) r.log_z = std::numeric_limits<double>::quiet_NaN();
   r.method = sampled ? "auto(exact+mcsat)" : "auto(exact)";
   return r;

@@ -83,20 +83,21 @@ LogZResult log_partition(const GroundNetwork& net, const LogZOptions& options) {
   r.log_z = net.constant();
   double var = 0.0;
   const auto comps = split_components(net);
+  std::vector<Component> small;
+  std::vector<double> marginals(static_cast<std::size_t>(net.num_atoms()));
   for (std::size_t i = 0; i < comps.size(); ++i) {
     const auto& comp = comps[i];
-    const bool small = component_state_bits(net, comp) <= options.exact.max_component_bits + 1e-9;
-    const GroundNetwork sub = extract_component(net, comp);
-    if (small && !options.force_ais) {
-      r.log_z += enumerate_network(sub).log_z;
+    if (!options.force_ais && component_state_bits(net, comp) <= options.exact.max_component_bits + 1e-9) {
+      small.push_back(comp);
       continue;
     }
-    const auto [lz, se] = ais_log_z(sub, options, options.seed * 1000003ULL + i);
+    const auto [lz, se] = ais_log_z(extract_component(net, comp), options, options.seed * 1000003ULL + i);
     r.log_z += lz;
     var += se * se;
     r.exact = false;
     ++r.estimated_components;
   }
+  r.log_z += exact_components(net, small, marginals);
   r.std_error = std::sqrt(var);
   return r;
 }
