@@ -19,6 +19,7 @@
 #include "stdlib/indoor/io/trace_plot.h"
 #include "stdlib/indoor/io/world_images.h"
 #include "stdlib/indoor/io/world_json.h"
+#include "stdlib/indoor/io/world_json_read.h"
 #include "stdlib/indoor/io/world_writer.h"
 #include "tests/indoor_io/temp_dir.h"
 
@@ -280,4 +281,35 @@ TEST_CASE("small maps are upscaled and empty traces still render") {
   CHECK(l(1, 2) == 0);
   CHECK(l(10, 28) == 0);
   CHECK(cv::countNonZero(l) == 26 * 16);
+}
+
+TEST_CASE("world.json reads back into the same result") {
+  const OccupancyMap map = load_map_yaml(kExample / "sim_office.yaml");
+  WorldResult w = sample_result(map);
+  w.trace.clear();
+  TempDir dir("readback");
+  write_world_json(dir / "world.json", w);
+  const WorldResult r = read_world_json(dir / "world.json");
+  CHECK(world_json_text(r) == world_json_text(w));
+  // The committed ground truth parses too (metrics empty).
+  const WorldResult t = read_world_json(kExample / "sim_office_truth.json");
+  CHECK(t.units.size() == 8);
+  CHECK(t.doors.size() == 8);
+  CHECK(t.metrics.empty());
+  CHECK(t.map.counts.free > 0);
+}
+
+TEST_CASE("bad world.json names the file and the place") {
+  CHECK_THROWS_WITH(parse_world_json("{\n  \"map\": {\n  ]\n}", "w.json"),
+                    Catch::StartsWith("w.json:3: error: JSON syntax"));
+  const std::string base =
+      R"({"map":{"source":"m","width":10,"height":10,"resolution":0.05,"origin":[0,0,0]},)";
+  CHECK_THROWS_WITH(parse_world_json(base + R"("units":[{"id":1,"type":"room","type_probs":{},"corners":[[0,0],[1,0],[1,1]]}],"doors":[]})", "w.json"),
+                    Catch::Contains("units[0].corners") && Catch::Contains("expected 4"));
+  CHECK_THROWS_WITH(parse_world_json(base + R"("units":[{"id":"one"}],"doors":[]})", "w.json"),
+                    Catch::Contains("units[0].id"));
+  CHECK_THROWS_WITH(parse_world_json(base + R"("units":[],"doors":[{"id":1,"units":[1,2],"segment":[[0,0],[1,1]]}]})", "w.json"),
+                    Catch::Contains("door 1"));
+  CHECK_THROWS_WITH(parse_world_json(R"({"units":[]})", "w.json"), Catch::Contains("'map'"));
+  CHECK_THROWS_AS(read_world_json("/nonexistent/world.json"), WorldJsonError);
 }

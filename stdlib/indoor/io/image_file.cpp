@@ -18,7 +18,10 @@ namespace ksmc::stdlib::indoor::io {
 
 namespace fs = std::filesystem;
 
-std::string read_file_bytes(const fs::path& path) {
+namespace {
+
+// Reads at most `limit` bytes (all of the file when limit == 0).
+std::string read_bytes(const fs::path& path, std::size_t limit) {
   std::error_code ec;
   if (!fs::exists(path, ec)) {
     throw MapLoadError(MapErrorKind::Unreadable, path, 0, "file does not exist");
@@ -34,7 +37,13 @@ std::string read_file_bytes(const fs::path& path) {
   std::string out;
   char buf[1 << 16];
   std::size_t n = 0;
-  while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) out.append(buf, n);
+  while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) {
+    out.append(buf, n);
+    if (limit > 0 && out.size() >= limit) {
+      out.resize(limit);
+      break;
+    }
+  }
   const bool failed = std::ferror(f) != 0;
   const int saved = errno;
   std::fclose(f);
@@ -44,6 +53,10 @@ std::string read_file_bytes(const fs::path& path) {
   }
   return out;
 }
+
+}  // namespace
+
+std::string read_file_bytes(const fs::path& path) { return read_bytes(path, 0); }
 
 namespace {
 
@@ -304,9 +317,21 @@ ImageHeader read_image_header(const fs::path& path, std::string_view b) {
 }
 
 GreyImage read_grey_image(const fs::path& path) {
-  const std::string bytes = read_file_bytes(path);
+  // The header is checked on the first 1 MiB, so a map above the size limit is refused before
+  // the file is read in full or any pixel buffer is allocated.
+  constexpr std::size_t kPrefix = std::size_t{1} << 20;
+  const std::string prefix = read_bytes(path, kPrefix);
   GreyImage out;
-  out.header = read_image_header(path, bytes);
+  bool header_done = false;
+  try {
+    out.header = read_image_header(path, prefix);
+    header_done = true;
+  } catch (const MapLoadError& e) {
+    // A header that does not fit in the prefix (megabytes of PGM comments) is re-read in full.
+    if (e.kind() != MapErrorKind::Truncated || prefix.size() < kPrefix) throw;
+  }
+  const std::string bytes = prefix.size() < kPrefix ? prefix : read_file_bytes(path);
+  if (!header_done) out.header = read_image_header(path, bytes);
   if (out.header.format == ImageFormat::Png) {
     out.grey = decode_png(path, bytes, out.header);
   } else {
