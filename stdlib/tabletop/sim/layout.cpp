@@ -105,7 +105,7 @@ bool place_leaner(Rng& rng, const BoxItem& item, const Box& base, const std::vec
     const Eigen::Matrix3d r = b.pose.rotation();
     double reach = 0.0;
     for (int i = 0; i < 3; ++i) reach += std::abs(r.col(i).head<2>().dot(n)) * 0.5 * b.size[i];
-    const double dist = base_reach + reach * rng.uniform(0.55, 0.8) + 0.004;
+    const double dist = base_reach + reach + 0.004;
     b.pose.t.head<2>() = fb.centre + dist * n + rng.uniform(-0.3, 0.3) * std::min(fb.half.x(), fb.half.y()) *
                                                      Eigen::Vector2d(-n.y(), n.x());
     b.pose.t.z() = 0.0;
@@ -123,16 +123,18 @@ bool place_leaner(Rng& rng, const BoxItem& item, const Box& base, const std::vec
 }  // namespace
 
 Eigen::Vector2d drop_region(int n, const TableSpec& table) {
-  const double hx = std::min({0.16 + 0.01 * n, 0.30, table.half_extent.x() - 0.08});
-  const double hy = std::min({0.12 + 0.007 * n, 0.22, table.half_extent.y() - 0.08});
+  const double hx = std::min({0.16 + 0.01 * n, 0.34, table.half_extent.x() - 0.08});
+  const double hy = std::min({0.12 + 0.007 * n, 0.25, table.half_extent.y() - 0.08});
   return {hx, hy};
 }
 
 std::optional<Layout> draw_layout(Rng& rng, int n, const TableSpec& table, const LayoutParams& params) {
   Layout layout;
   layout.region_half = drop_region(n, table);
-  std::vector<Footprint> placed;
-  std::vector<std::size_t> column_bases;  // index into bodies of each column's bottom box
+  std::vector<Footprint> placed;                 // one per stacked body (leaners excluded)
+  std::vector<int> column_of;                    // column of each entry of `placed`
+  std::vector<std::size_t> column_bases;         // index into bodies of each column's bottom box
+  std::vector<std::vector<std::size_t>> columns; // body indices per column, bottom first
 
   int remaining = n;
   while (remaining > 0) {
@@ -207,15 +209,54 @@ std::optional<Layout> draw_layout(Rng& rng, int n, const TableSpec& table, const
       }
       if (!ok) continue;
       column_bases.push_back(layout.bodies.size());
+      columns.emplace_back();
       for (int k = 0; k < height; ++k) {
         const auto& m = members[static_cast<std::size_t>(order[static_cast<std::size_t>(k)])];
+        columns.back().push_back(layout.bodies.size());
         layout.items.push_back(m);
         layout.bodies.push_back({boxes[static_cast<std::size_t>(k)], m.mass, m.friction});
         placed.push_back(prints[static_cast<std::size_t>(k)]);
+        column_of.push_back(static_cast<int>(columns.size()) - 1);
       }
       placed_column = true;
     }
-    if (!placed_column) return std::nullopt;
+    if (placed_column) continue;
+    // No free spot on the table: put the boxes on top of existing columns (at most 3 high).
+    for (const auto& m : members) {
+      bool stacked = false;
+      for (int attempt = 0; attempt < 4 * static_cast<int>(columns.size()) + 8 && !stacked; ++attempt) {
+        if (columns.empty()) break;
+        const auto c = static_cast<std::size_t>(rng.uniform_int(0, static_cast<int>(columns.size()) - 1));
+        if (columns[c].size() >= 3) continue;
+        const Box& top = layout.bodies[columns[c].back()].box;
+        const Footprint below = footprint(top);
+        Box b;
+        b.size = m.size;
+        const double yaw = rng.bernoulli(0.5) ? below.yaw + rng.uniform(-0.07, 0.07) : rng.uniform(0.0, kPi);
+        const Eigen::Vector2d off(rng.uniform(-0.3, 0.3) * below.half.x(), rng.uniform(-0.3, 0.3) * below.half.y());
+        const Eigen::Vector2d centre = below.centre + Eigen::Rotation2Dd(below.yaw) * off;
+        b.pose.q = resting_orientation(rng, smallest_axis(m.size), yaw);
+        b.pose.t = Eigen::Vector3d(centre.x(), centre.y(), 0.0);
+        set_bottom(b, highest_z(top) + kDropGap);
+        const Footprint f = footprint(b);
+        if (!inside_region(f, layout.region_half, table)) continue;
+        bool clash = false;
+        for (std::size_t p = 0; p < placed.size() && !clash; ++p) {
+          clash = column_of[p] != static_cast<int>(c) &&
+                  footprints_overlap(f.centre, f.half, f.yaw, placed[p].centre, placed[p].half, placed[p].yaw,
+                                     params.clearance);
+        }
+        for (const SimBody& o : layout.bodies) clash = clash || sat_overlap(b, o.box) > -0.002;
+        if (clash) continue;
+        columns[c].push_back(layout.bodies.size());
+        layout.items.push_back(m);
+        layout.bodies.push_back({b, m.mass, m.friction});
+        placed.push_back(f);
+        column_of.push_back(static_cast<int>(c));
+        stacked = true;
+      }
+      if (!stacked) return std::nullopt;
+    }
   }
   return layout;
 }

@@ -25,6 +25,7 @@ class World {
     btContactSolverInfo& info = world_.getSolverInfo();
     info.m_numIterations = params.solver_iterations;
     info.m_solverMode &= ~SOLVER_RANDMIZE_ORDER;
+    info.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
 
     const Eigen::Vector3d table_half(table.half_extent.x(), table.half_extent.y(), 0.5 * table.thickness);
     Pose table_pose;
@@ -66,6 +67,8 @@ class World {
     auto body = std::make_unique<btRigidBody>(ci);
     // Sleeping would freeze slowly creeping stacks and fake a rest state; keep everyone awake.
     body->setActivationState(DISABLE_DEACTIVATION);
+    // Friction anchors keep resting contacts from drifting sideways (Bullet's stacking fix).
+    body->setCollisionFlags(body->getCollisionFlags() | btCollisionObject::CF_HAS_FRICTION_ANCHOR);
     world_.addRigidBody(body.get());
     shapes_.push_back(std::move(shape));
     bodies_.push_back(std::move(body));
@@ -141,9 +144,15 @@ SettleResult settle(std::span<const SimBody> bodies, const TableSpec& table, con
   }
   result.status = SettleStatus::not_settled;
   result.time = static_cast<double>(max_steps) * dt;
-  result.detail = fmt::format("not at rest after {:.1f} s", result.time);
   result.poses.resize(world.box_count());
-  for (std::size_t i = 0; i < result.poses.size(); ++i) result.poses[i] = world.pose(i);
+  std::size_t fastest = 0;
+  for (std::size_t i = 0; i < result.poses.size(); ++i) {
+    result.poses[i] = world.pose(i);
+    if (world.linear_speed(i) > world.linear_speed(fastest)) fastest = i;
+  }
+  result.detail = fmt::format("not at rest after {:.1f} s (box {} at {:.1f} mm/s, {:.3f} rad/s, z {:.3f} m)", result.time,
+                              fastest, 1000.0 * world.linear_speed(fastest), world.angular_speed(fastest),
+                              result.poses[fastest].t.z());
   return result;
 }
 
