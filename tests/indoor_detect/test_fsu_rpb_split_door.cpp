@@ -140,12 +140,17 @@ TEST_CASE("split lines are found at an internal wall", "[split]") {
 
 TEST_CASE("door candidates at every drawn doorway and none on a solid wall", "[door]") {
   const Scene s = office_scene();
-  for (double deg : {0.0, 20.0, 33.0}) {
+  for (double deg : {0.0, 20.0, 33.0})
+  for (double inset : {0.0, 2.0}) {  // units on the wall centre lines, or on the wall faces
     const ClassGrid g = render(s, deg);
     std::vector<OrientedRect> units;
-    for (const auto& r : s.rooms) units.push_back(expected_rect(s, r, deg));
+    for (const auto& r : s.rooms) {
+      units.push_back(expected_rect(s, r, deg));
+      units.back().w -= 2 * inset;
+      units.back().h -= 2 * inset;
+    }
     const auto doors = detect_doors(g, units);
-    INFO("deg " << deg << ": " << doors.size() << " door candidates");
+    INFO("deg " << deg << " inset " << inset << ": " << doors.size() << " door candidates");
     // Each drawn doorway has a candidate whose centre is within 3 cells.
     for (const auto& d : s.doors) {
       const Point2 want = expected_point(s, {0.5 * (d.x0 + d.x1), 0.5 * (d.y0 + d.y1)}, deg);

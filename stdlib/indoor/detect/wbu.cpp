@@ -113,8 +113,12 @@ FrameOutput run_frame(const cv::Mat1b& fgrid, const std::vector<Segment>& segmen
   std::vector<std::vector<int>> hps, vps;
   for (const auto& l : out.hlines) hps.push_back(row_prefix(l.coord));
   for (const auto& l : out.vlines) vps.push_back(col_prefix(l.coord));
-  cv::Mat1i free_int;
+  cv::Mat1i free_int, occ_int;
   cv::integral(freem / 255, free_int, CV_32S);
+  cv::integral(occ / 255, occ_int, CV_32S);
+  auto box_sum = [](const cv::Mat1i& in, int x0, int y0, int x1, int y1) {  // half-open box
+    return (long long)in(y1, x1) - in(y0, x1) - in(y1, x0) + in(y0, x0);
+  };
 
   // 3. Enumerate every rectangle of two horizontal and two vertical lines.
   const std::size_t nh = out.hlines.size(), nv = out.vlines.size();
@@ -148,13 +152,12 @@ FrameOutput run_frame(const cv::Mat1b& fgrid, const std::vector<Segment>& segmen
           const double wb = double(hps[l][x1 + 1] - hps[l][x0]) / double(dx + 1);
           if (wb < p.min_wall_weight) continue;
           const double wr = double(vps[j][y1 + 1] - vps[j][y0]) / double(dy + 1);
-          // Interior (strictly inside the wall lines) must be mostly free.
-          const int ix0 = x0 + 1, iy0 = y0 + 1, ix1 = x1, iy1 = y1;  // half-open
+          // Interior (clear of the walls) must be mostly free and hardly occupied.
+          const int ix0 = x0 + t + 1, iy0 = y0 + t + 1, ix1 = x1 - t, iy1 = y1 - t;  // half-open
           const long long interior = (long long)(ix1 - ix0) * (iy1 - iy0);
-          if (interior <= 0) continue;
-          const long long nfree = (long long)free_int(iy1, ix1) - free_int(iy0, ix1) - free_int(iy1, ix0) +
-                                  free_int(iy0, ix0);
-          if (double(nfree) < p.min_free_fraction * double(interior)) continue;
+          if (ix1 <= ix0 || iy1 <= iy0) continue;
+          if (double(box_sum(free_int, ix0, iy0, ix1, iy1)) < p.min_free_fraction * double(interior)) continue;
+          if (double(box_sum(occ_int, ix0, iy0, ix1, iy1)) > p.max_occupied_fraction * double(interior)) continue;
           out.boxes.push_back({x0, y0, x1, y1, std::min({wl, wr, wt, wb})});
           ++out.enumerated;
           if (out.boxes.size() >= soft_cap) prune(out.boxes, p.max_candidates);
@@ -175,7 +178,8 @@ WbuResult detect_wbu_units(const ClassGrid& grid, const WbuParams& p) {
   WbuResult res;
   const auto analysis = analyse_orientations(grid, p.orientation);
   for (const auto& o : analysis.peaks) {
-    res.frames_deg.push_back(o.angle_deg);
+    // Frames in (-45, 45]: a map aligned with the image axes is worked on unrotated.
+    res.frames_deg.push_back(o.angle_deg > 45.0 ? o.angle_deg - 90.0 : o.angle_deg);
     if (!p.secondary_orientations) break;
   }
   if (res.frames_deg.empty()) res.frames_deg.push_back(0.0);

@@ -31,14 +31,16 @@ struct WbuParams {
   double min_side = 10.0;             // shortest unit side, cells (0.5 m)
   double max_side = 1e9;              // longest unit side, cells
   double max_aspect = 25.0;           // longest / shortest side
-  double min_free_fraction = 0.5;     // free cells / interior cells
+  double min_free_fraction = 0.5;     // free cells / interior cells (interior: the rectangle
+                                      //   shrunk by wall_tolerance + 1 cells on every side)
+  double max_occupied_fraction = 0.25;  // occupied cells / interior cells
   std::size_t max_candidates = 20000; // strongest kept (weight, then area, then position)
 };
 
 struct WbuResult {
   std::vector<UnitCandidate> candidates;  // sorted: weight descending, then deterministic
   CumulativeSampler sampler;              // over candidates (eq. 3.15-3.17)
-  std::vector<double> frames_deg;         // orientations used, dominant first
+  std::vector<double> frames_deg;         // orientations used, dominant first, in (-45, 45]
   std::vector<Segment> wall_lines;        // extended wall lines of all frames, map coordinates
   std::size_t enumerated = 0;             // rectangles that passed all prior tests (before the cap)
 };
