@@ -71,18 +71,21 @@ MapResult max_walksat(const GroundNetwork& net, const MapOptions& options) {
   LocalState st(net, occ);
   Rng rng(options.seed);
   MapResult best;
+  const std::int64_t stall = options.stall_flips > 0 ? options.stall_flips : 1000 + 20 * std::int64_t{net.num_clauses()};
   std::int32_t best_hard = -1;
   double best_soft = 0.0;
   for (std::int32_t t = 0; t < std::max<std::int32_t>(1, options.tries); ++t) {
     st.randomize(rng);
+    std::int64_t last_improvement = 0;
     for (std::int64_t f = 0;; ++f) {
       if (best_hard < 0 || st.hard_bad() < best_hard ||
           (st.hard_bad() == best_hard && st.soft_cost() < best_soft - 1e-12)) {
         best_hard = st.hard_bad();
         best_soft = st.soft_cost();
         best.state = st.values();
+        last_improvement = f;
       }
-      if (st.num_bad() == 0 || f >= options.max_flips) break;
+      if (st.num_bad() == 0 || f >= options.max_flips || f - last_improvement > stall) break;
       walksat_step(st, rng, options.noise);
       ++best.flips;
       if ((f & 1023) == 1023) st.refresh_cost();

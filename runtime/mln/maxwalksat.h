@@ -18,6 +18,8 @@ namespace ksmc::runtime::mln {
 struct MapOptions {
   std::int64_t max_flips = 100000;  // per try
   std::int32_t tries = 4;           // random restarts
+  std::int64_t stall_flips = 0;     // end a try after this many flips without improvement;
+                                    // 0 = 1000 + 20 x clauses
   double noise = 0.3;               // probability of a random (not greedy) move
   std::uint64_t seed = 1;
 };
