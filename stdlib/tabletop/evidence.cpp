@@ -11,7 +11,7 @@ namespace ksmc::stdlib::tabletop {
 namespace {
 
 void compute_pair(Evidence& ev, std::size_t a, std::size_t b, const EvidenceParams& params) {
-  const PairGeometry g = pair_geometry(ev.boxes[a], ev.boxes[b]);
+  const PairGeometry g = pair_geometry(ev.boxes[a], ev.boxes[b], params.max_contact_eps());
   PairGeometry g_ba = g;
   g_ba.direction = -g.direction;
   ev.geometry[a][b] = g;

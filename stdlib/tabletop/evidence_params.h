@@ -19,6 +19,12 @@ struct EvidenceParams {
   double vertical_intersect_eps = 0.015; // min depth when the penetration axis is near-vertical [m]
   double vertical_cone_rad = 30.0 * std::numbers::pi / 180.0;  // "near-vertical" half-angle
   double higher_tol = 0.015;             // see extract_higher.h [m]
+
+  // Largest gap any contact decision can accept: pairs farther apart (by the SAT
+  // lower bound) need no exact distance.
+  [[nodiscard]] double max_contact_eps() const {
+    return contact_eps > vertical_contact_eps ? contact_eps : vertical_contact_eps;
+  }
 };
 
 }  // namespace ksmc::stdlib::tabletop

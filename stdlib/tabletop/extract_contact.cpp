@@ -19,7 +19,7 @@ bool contact_from_geometry(const PairGeometry& g, const EvidenceParams& params) 
 }
 
 bool extract_contact(const Obb& a, const Obb& b, const EvidenceParams& params) {
-  return contact_from_geometry(pair_geometry(a, b), params);
+  return contact_from_geometry(pair_geometry(a, b, params.max_contact_eps()), params);
 }
 
 }  // namespace ksmc::stdlib::tabletop

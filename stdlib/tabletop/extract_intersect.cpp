@@ -13,7 +13,7 @@ bool intersect_from_geometry(const PairGeometry& g, const EvidenceParams& params
 }
 
 bool extract_intersect(const Obb& a, const Obb& b, const EvidenceParams& params) {
-  return intersect_from_geometry(pair_geometry(a, b), params);
+  return intersect_from_geometry(pair_geometry(a, b, params.max_contact_eps()), params);
 }
 
 }  // namespace ksmc::stdlib::tabletop

@@ -1,6 +1,7 @@
 #include "stdlib/tabletop/obb_distance.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -70,21 +71,26 @@ ClosestPoints obb_closest_points(const Obb& a, const Obb& b) {
       res.on_b = pb;
     }
   };
-  for (int k = 0; k < 8; ++k) {
-    const Eigen::Vector3d va = a.vertex(k);
-    const Eigen::Vector3d cb = b.closest_point(va);
-    consider((va - cb).squaredNorm(), va, cb);
-    const Eigen::Vector3d vb = b.vertex(k);
-    const Eigen::Vector3d ca = a.closest_point(vb);
-    consider((vb - ca).squaredNorm(), ca, vb);
+  const auto va = a.vertices();
+  const auto vb = b.vertices();
+  for (std::size_t k = 0; k < 8; ++k) {
+    const Eigen::Vector3d cb = b.closest_point(va[k]);
+    consider((va[k] - cb).squaredNorm(), va[k], cb);
+    const Eigen::Vector3d ca = a.closest_point(vb[k]);
+    consider((vb[k] - ca).squaredNorm(), ca, vb[k]);
   }
-  for (int i = 0; i < 12; ++i) {
-    const auto ea = a.edge(i);
-    for (int j = 0; j < 12; ++j) {
-      const auto eb = b.edge(j);
+  // Edge k joins vertices base and base | (1 << axis) (same numbering as Obb::edge).
+  std::array<std::array<std::size_t, 2>, 12> edges{};
+  for (int k = 0; k < 12; ++k) {
+    const int axis = k / 4, rest = k % 4;
+    const int base = (((rest >> 0) & 1) << ((axis + 1) % 3)) | (((rest >> 1) & 1) << ((axis + 2) % 3));
+    edges[static_cast<std::size_t>(k)] = {static_cast<std::size_t>(base), static_cast<std::size_t>(base | (1 << axis))};
+  }
+  for (const auto& ea : edges) {
+    for (const auto& eb : edges) {
       Eigen::Vector3d pa;
       Eigen::Vector3d pb;
-      const double sq = segment_segment_closest(ea[0], ea[1], eb[0], eb[1], pa, pb);
+      const double sq = segment_segment_closest(va[ea[0]], va[ea[1]], vb[eb[0]], vb[eb[1]], pa, pb);
       consider(sq, pa, pb);
     }
   }

@@ -15,7 +15,7 @@ bool all_vertices_inside(const Obb& inner, const Obb& outer) {
 
 }  // namespace
 
-PairGeometry pair_geometry(const Obb& a, const Obb& b) {
+PairGeometry pair_geometry(const Obb& a, const Obb& b, double exact_below) {
   PairGeometry g;
   const SatResult sat = obb_sat(a, b);
   if (sat.overlapping) {
@@ -24,6 +24,12 @@ PairGeometry pair_geometry(const Obb& a, const Obb& b) {
     g.depth = sat.depth;
     g.direction = sat.axis;
     g.contained = all_vertices_inside(a, b) || all_vertices_inside(b, a);
+    return g;
+  }
+  if (sat.gap > exact_below) {
+    g.distance = sat.gap;
+    g.distance_exact = false;
+    g.direction = sat.axis;
     return g;
   }
   const ClosestPoints cp = obb_closest_points(a, b);

@@ -3,6 +3,8 @@
 // penetration depth and axis, containment.
 #pragma once
 
+#include <limits>
+
 #include <Eigen/Core>
 
 #include "stdlib/tabletop/obb.h"
@@ -10,13 +12,19 @@
 namespace ksmc::stdlib::tabletop {
 
 struct PairGeometry {
-  double distance = 0.0;           // exact distance between the solids (0 if overlapping)
+  double distance = 0.0;           // distance between the solids (0 if overlapping), exact if distance_exact
+  bool distance_exact = true;      // false: `distance` is the SAT lower bound (gap beyond exact_below)
   double depth = 0.0;              // SAT penetration depth (0 if separated)
   bool overlapping = false;
   bool contained = false;          // one box entirely inside the other
   Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  // gap direction (a→b) or SAT axis
 };
 
-PairGeometry pair_geometry(const Obb& a, const Obb& b);
+// `exact_below`: when the SAT gap (a lower bound of the distance) already exceeds
+// it, the exact closest-point enumeration is skipped and the gap is reported with
+// distance_exact = false. Extractors pass their largest contact tolerance, so the
+// contact decision is unaffected.
+PairGeometry pair_geometry(const Obb& a, const Obb& b,
+                           double exact_below = std::numeric_limits<double>::infinity());
 
 }  // namespace ksmc::stdlib::tabletop

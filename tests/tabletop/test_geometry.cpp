@@ -9,6 +9,7 @@
 #include "stdlib/tabletop/extract_stable.h"
 #include "stdlib/tabletop/obb_distance.h"
 #include "stdlib/tabletop/obb_sat.h"
+#include "stdlib/tabletop/pair_geometry.h"
 #include "tests/tabletop/tabletop_test_util.h"
 
 using namespace ksmc::stdlib::tabletop;
@@ -226,4 +227,19 @@ TEST_CASE("random poses: exact distance vs brute-force sampled distance", "[geom
     CHECK(sat.gap <= cp.distance + 1e-12);  // SAT is only a lower bound
   }
   CHECK(separated > 100);
+}
+
+TEST_CASE("pair geometry skips the exact distance only beyond the contact tolerances", "[geometry]") {
+  const Obb a = box(Vector3d(0, 0, 0.05), Vector3d(0.1, 0.1, 0.1));
+  const Obb far = box(Vector3d(0.3, 0.05, 0.05), Vector3d(0.1, 0.1, 0.1), rot(20, Vector3d::UnitZ()));
+  const Obb near = box(Vector3d(0.113, 0.0, 0.05), Vector3d(0.1, 0.1, 0.1), rot(3, Vector3d::UnitZ()));
+  const double tol = kParams.max_contact_eps();
+  const PairGeometry gf = pair_geometry(a, far, tol);
+  CHECK_FALSE(gf.distance_exact);
+  CHECK(gf.distance > tol);
+  CHECK(gf.distance <= obb_closest_points(a, far).distance + 1e-12);
+  const PairGeometry gn = pair_geometry(a, near, tol);
+  CHECK(gn.distance_exact);
+  CHECK(gn.distance == Approx(obb_closest_points(a, near).distance));
+  CHECK(pair_geometry(a, far).distance_exact);  // no cut-off: always exact
 }
