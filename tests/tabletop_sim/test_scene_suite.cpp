@@ -27,8 +27,8 @@ GeneratorOptions suite_options() {
   GeneratorOptions o;
   o.min_objects = 3;
   o.max_objects = 9;
-  o.corruption.hidden_rate = 0.4;
-  o.corruption.false_rate = 0.12;
+  o.corruption.hidden_rate = 0.3;  // the defaults, spelled out: the counts below depend on them
+  o.corruption.false_rate = 0.1;
   return o;
 }
 

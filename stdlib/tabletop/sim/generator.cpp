@@ -12,7 +12,7 @@ namespace ksmc::stdlib::tabletop::sim {
 namespace {
 
 // Independent random streams per stage, so that e.g. keypoint settings do not change physics.
-enum Stage : std::uint64_t { kLayout = 1, kCorrupt = 2, kView = 3, kNoise = 4, kOrder = 5 };
+enum Stage : std::uint64_t { kLayout = 1, kCorrupt = 2, kView = 3, kNoise = 4, kOrder = 5, kCount = 6 };
 std::uint64_t stage_seed(std::uint64_t seed, int attempt, Stage stage) {
   return mix_seed(seed, static_cast<std::uint64_t>(attempt) * 16 + stage);
 }
@@ -26,9 +26,10 @@ struct Draft {
 };
 
 // Steps 1-3: layout, Bullet settling, true relations.
-std::optional<Draft> simulate(std::uint64_t seed, int attempt, const GeneratorOptions& o, std::string& why) {
+// The box count is drawn once per scene, so redraws (more frequent for crowded tables) do not
+// bias the generated counts towards small scenes.
+std::optional<Draft> simulate(std::uint64_t seed, int attempt, int n, const GeneratorOptions& o, std::string& why) {
   Rng rng(stage_seed(seed, attempt, kLayout));
-  const int n = rng.uniform_int(o.min_objects, o.max_objects);
   auto layout = draw_layout(rng, n, o.table, o.layout);
   if (!layout) {
     why = fmt::format("could not place {} boxes without overlap", n);
@@ -214,9 +215,11 @@ GeneratedScene generate_scene(std::uint64_t seed, const GeneratorOptions& o) {
   GeneratedScene scene;
   scene.seed = seed;
   scene.camera = o.camera;
+  Rng count_rng(stage_seed(seed, 0, kCount));
+  const int n = count_rng.uniform_int(o.min_objects, o.max_objects);
   for (int attempt = 0; attempt < o.max_attempts; ++attempt) {
     std::string why;
-    auto draft = simulate(seed, attempt, o, why);
+    auto draft = simulate(seed, attempt, n, o, why);
     if (!draft) {
       scene.redraws.push_back(why);
       continue;
