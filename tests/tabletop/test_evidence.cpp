@@ -54,7 +54,9 @@ TEST_CASE("incremental re-extraction equals full extraction", "[evidence]") {
     s.objects.push_back(object("o" + std::to_string(i), Vector3d(0.15 * u(rng), 0.15 * u(rng), 0.05 + 0.05 * u(rng)),
                                Vector3d(0.08, 0.06, 0.1), rot(10 * u(rng), Vector3d(u(rng), u(rng), 1))));
   Evidence ev = extract_evidence(s);
+  int changed = 0;
   for (int step = 0; step < 40; ++step) {
+    const auto before = ev.atoms();
     const auto k = static_cast<std::size_t>(step % 8);
     s.objects[k].pose.t += Vector3d(0.05 * u(rng), 0.05 * u(rng), 0.02 * u(rng));
     s.objects[k].pose.q = (Eigen::Quaterniond(rot(5 * u(rng), Vector3d(u(rng), u(rng), u(rng) + 2))) *
@@ -62,8 +64,8 @@ TEST_CASE("incremental re-extraction equals full extraction", "[evidence]") {
     update_evidence(ev, s, k);
     const Evidence full = extract_evidence(s);
     REQUIRE(ev.atoms() == full.atoms());
+    if (ev.atoms() != before) ++changed;
   }
-  // The random walk must have produced some pairwise relations for the check to mean something.
-  const auto atoms = ev.atoms();
-  CHECK(std::count_if(atoms.begin(), atoms.end(), [](const GroundAtom& a) { return a.args.size() == 2; }) > 8);
+  // The walk must actually change relations for the comparison to mean something.
+  CHECK(changed >= 15);
 }
