@@ -73,7 +73,18 @@ inline RandomKb make_random_kb(std::mt19937_64& rng, int max_free = 12) {
     }
     kb.evidence = std::make_unique<Evidence>(kb.program, kb.domain);
     for (int p = 0; p < np; ++p) {
-      if (kb.program.predicates[p].query) continue;
+      if (kb.program.predicates[p].query) {
+        // Sometimes fix a few query atoms too (exercises folding of fixed query atoms
+        // and of exactly-one blocks).
+        if (uni(0, 3) != 0) continue;
+        kb.program.predicates[p].query_evidence_allowed = true;
+        for (std::int64_t f = 0; f < kb.evidence->num_atoms(p); ++f) {
+          const int r = uni(0, 9);
+          if (r < 2) kb.evidence->set_flat(p, f, 1);
+          else if (r < 4) kb.evidence->set_flat(p, f, 0);
+        }
+        continue;
+      }
       for (std::int64_t f = 0; f < kb.evidence->num_atoms(p); ++f) {
         const int r = uni(0, 9);
         if (r < 4) kb.evidence->set_flat(p, f, 1);

@@ -159,3 +159,49 @@ TEST_CASE("grounder: existential variables and exactly-one groups", "[mln][groun
   CHECK_THROWS_WITH(ground(p, d, bad), Catch::Contains("exclusive argument of 'Label'") &&
                                            Catch::Contains("more than one atom true"));
 }
+
+TEST_CASE("network builder normalises clauses", "[mln][network]") {
+  GroundNetwork net;
+  net.add_atoms(3);
+  const Lit dup[] = {make_lit(2, false), make_lit(0, true), make_lit(2, false)};
+  net.add_clause(dup, 1.25, 7);
+  REQUIRE(net.num_clauses() == 1);
+  CHECK(std::vector<Lit>(net.clause(0).begin(), net.clause(0).end()) == std::vector<Lit>{1, 4});
+  CHECK(net.origin(0) == 7);
+  const Lit taut[] = {make_lit(1, false), make_lit(1, true)};
+  net.add_clause(taut, 0.5);
+  net.add_hard_clause(taut);
+  CHECK(net.num_clauses() == 1);
+  CHECK(net.constant() == 0.5);
+  net.add_clause({}, 3.0);  // never satisfied: dropped
+  CHECK(net.num_clauses() == 1);
+  CHECK_THROWS_WITH(net.add_hard_clause({}), Catch::Contains("empty hard clause"));
+  const Lit out_of_range[] = {make_lit(5, false)};
+  CHECK_THROWS_WITH(net.add_clause(out_of_range, 1.0), Catch::Contains("names atom 5"));
+  const AtomId blk[] = {0, 1};
+  net.add_exactly_one(blk);
+  CHECK_THROWS_WITH(net.add_exactly_one(blk), Catch::Contains("two exactly-one blocks"));
+  const std::uint8_t s1[] = {1, 0, 1}, s2[] = {1, 1, 0};
+  CHECK(net.log_weight(s1) == Approx(0.5 + 1.25));
+  CHECK(std::isinf(net.log_weight(s2)));
+}
+
+TEST_CASE("grounding is deterministic", "[mln][grounder]") {
+  TabletopKb kb;
+  const std::string path = std::string(KSMC_SOURCE_DIR) + "/tests/mln/data/scene20.db";
+  const auto text = read_text_file(path);
+  Domain d;
+  collect_db_constants(text, path, kb.program, d);
+  Evidence ev(kb.program, d);
+  parse_db(text, path, kb.program, d, ev);
+  const auto a = ground(kb.program, d, ev);
+  const auto b = ground(kb.program, d, ev);
+  REQUIRE(a.network.num_clauses() == b.network.num_clauses());
+  for (std::int32_t c = 0; c < a.network.num_clauses(); ++c) {
+    CHECK(std::vector<Lit>(a.network.clause(c).begin(), a.network.clause(c).end()) ==
+          std::vector<Lit>(b.network.clause(c).begin(), b.network.clause(c).end()));
+    CHECK(a.network.weight(c) == b.network.weight(c));
+  }
+  CHECK(a.network.constant() == b.network.constant());
+  CHECK(a.index.atom == b.index.atom);
+}

@@ -95,8 +95,15 @@ TEST_CASE("samplers are deterministic for a seed", "[mln][gibbs][mcsat]") {
   mo.samples = 500;
   mo.seed = 5;
   CHECK(mc_sat(net, mo).marginals == mc_sat(net, mo).marginals);
-  mo.seed = 6;
-  CHECK(mc_sat(net, mo).marginals != mc_sat(net, McSatOptions{}).marginals);
+  McSatOptions other = mo;
+  other.seed = 6;
+  CHECK(mc_sat(net, mo).marginals != mc_sat(net, other).marginals);
+  GibbsOptions gother = go;
+  gother.seed = 6;
+  CHECK(gibbs_sampling(net, go).marginals != gibbs_sampling(net, gother).marginals);
+  MapOptions map;
+  map.seed = 9;
+  CHECK(max_walksat(net, map).state == max_walksat(net, map).state);
 }
 
 TEST_CASE("MC-SAT never violates hard clauses on random KBs with hard rules", "[mln][mcsat]") {
