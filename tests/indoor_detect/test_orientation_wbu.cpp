@@ -81,7 +81,8 @@ TEST_CASE("wall, unit and door weights (eq. 3.10-3.14, 3.23-3.25)", "[weights]")
   ClassGrid g(40, 40, static_cast<unsigned char>(Cell::Free));
   cv::line(g, {5, 10}, {34, 10}, cv::Scalar(double(Cell::Occupied)));  // 30 cells
   CHECK(wall_weight(g, {5, 10}, {34, 10}) == Approx(1.0));
-  CHECK(wall_weight(g, {5, 11}, {34, 11}) == Approx(1.0));        // within tolerance 1
+  CHECK(wall_weight(g, {5, 12}, {34, 12}) == Approx(1.0));        // within the default tolerance 2
+  CHECK(wall_weight(g, {5, 13}, {34, 13}) == Approx(0.0));        // beyond it
   CHECK(wall_weight(g, {5, 11}, {34, 11}, {0}) == Approx(0.0));   // exact eq. 3.14
   CHECK(wall_weight(g, {5, 10}, {64, 10}) == Approx(0.5));        // half of it outside the map / free
   CHECK(door_weight(g, {5, 20}, {34, 20}) == Approx(1.0));

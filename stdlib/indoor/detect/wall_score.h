@@ -16,8 +16,9 @@ namespace ksmc::stdlib::indoor::detect {
 
 struct WallScoreParams {
   // A wall sample matches when an occupied cell lies within this many cells of it,
-  // perpendicular to the wall: absorbs the +-1 cell placement error of thick SLAM walls.
-  int tolerance = 1;
+  // perpendicular to the wall: absorbs the placement error of thick or drifting SLAM walls
+  // (2 cells = 0.1 m, the same as WbuParams::wall_tolerance).
+  int tolerance = 2;
 };
 
 double wall_weight(const ClassGrid& grid, Point2 a, Point2 b, const WallScoreParams& params = {});
