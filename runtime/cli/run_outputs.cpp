@@ -89,12 +89,19 @@ nlohmann::json make_summary(const mcmc::RunResult& r, const mcmc::Schedule& sche
 std::string trace_csv(const mcmc::RunResult& r) {
   std::string out =
       "chain,iteration,log_posterior,log_likelihood,log_prior,best_log_posterior,acceptance_window,"
-      "acceptance_total\n";
+      "acceptance_total";
+  for (const auto& k : r.kernels) out += ",acceptance_" + k.name;
+  out += '\n';
   for (const auto& c : r.chains) {
     for (const auto& t : c.trace) {
-      out += fmt::format("{},{},{},{},{},{},{},{}\n", c.chain, t.iteration, t.log_posterior,
+      out += fmt::format("{},{},{},{},{},{},{},{}", c.chain, t.iteration, t.log_posterior,
                          t.log_likelihood, t.log_prior, t.best_log_posterior, t.acceptance_window,
                          t.acceptance_total);
+      // Empty cell: the kernel was not selected in that window.
+      for (const double a : t.kernel_acceptance_window) {
+        out += std::isnan(a) ? std::string(",") : fmt::format(",{}", a);
+      }
+      out += '\n';
     }
   }
   return out;

@@ -102,6 +102,7 @@ ChainResult Engine::run_chain(unsigned chain, const EngineConfig& cfg, Monitor& 
   std::uint64_t window_selected = 0;
   std::uint64_t window_accepted = 0;
   std::uint64_t done = 0;
+  std::vector<KernelStats> at_last_trace = res.kernels;
 
   auto push_trace = [&] {
     TracePoint t;
@@ -116,6 +117,14 @@ ChainResult Engine::run_chain(unsigned chain, const EngineConfig& cfg, Monitor& 
     t.acceptance_total = selected_total == 0 ? 0.0
                                              : static_cast<double>(accepted_total) /
                                                    static_cast<double>(selected_total);
+    t.kernel_acceptance_window.resize(res.kernels.size());
+    for (std::size_t k = 0; k < res.kernels.size(); ++k) {
+      const std::uint64_t sel = res.kernels[k].selected - at_last_trace[k].selected;
+      const std::uint64_t acc = res.kernels[k].accepted - at_last_trace[k].accepted;
+      t.kernel_acceptance_window[k] = sel == 0 ? std::numeric_limits<double>::quiet_NaN()
+                                               : static_cast<double>(acc) / static_cast<double>(sel);
+      at_last_trace[k] = res.kernels[k];
+    }
     res.trace.push_back(t);
     window_selected = 0;
     window_accepted = 0;
@@ -254,19 +263,26 @@ RunResult Engine::run(const EngineConfig& cfg) const {
   std::vector<std::thread> threads;
   threads.reserve(workers);
   for (unsigned w = 0; w < workers; ++w) threads.emplace_back(worker);
+  std::exception_ptr progress_error;
   {
     const auto interval = std::chrono::duration<double>(std::max(cfg.progress_interval_s, 0.01));
     std::unique_lock<std::mutex> lock(monitor.mutex);
     while (monitor.finished < n) {
       monitor.cv.wait_for(lock, interval);
-      if (monitor.finished < n) {
+      if (monitor.finished < n && !progress_error) {
         lock.unlock();
-        report(false);
+        try {
+          report(false);
+        } catch (...) {
+          progress_error = std::current_exception();  // stop the chains, rethrow after joining
+          abort.store(true);
+        }
         lock.lock();
       }
     }
   }
   for (auto& t : threads) t.join();
+  if (progress_error) std::rethrow_exception(progress_error);
 
   for (unsigned c = 0; c < n; ++c) {
     if (!errors[c]) continue;

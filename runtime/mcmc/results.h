@@ -41,7 +41,21 @@ struct TracePoint {
   double best_log_posterior = 0.0;
   double acceptance_window = 0.0;  // accepted / selected since the previous trace row
   double acceptance_total = 0.0;   // accepted / selected since the start
-  friend bool operator==(const TracePoint&, const TracePoint&) = default;
+  // Per kernel (kernel-table order): accepted / selected since the previous trace row,
+  // NaN when the kernel was not selected in that window.
+  std::vector<double> kernel_acceptance_window;
+  friend bool operator==(const TracePoint& a, const TracePoint& b) {
+    if (a.kernel_acceptance_window.size() != b.kernel_acceptance_window.size()) return false;
+    for (std::size_t k = 0; k < a.kernel_acceptance_window.size(); ++k) {
+      const double x = a.kernel_acceptance_window[k];
+      const double y = b.kernel_acceptance_window[k];
+      if (!(x == y || (x != x && y != y))) return false;  // NaN equals NaN here
+    }
+    return a.iteration == b.iteration && a.log_posterior == b.log_posterior &&
+           a.log_likelihood == b.log_likelihood && a.log_prior == b.log_prior &&
+           a.best_log_posterior == b.best_log_posterior && a.acceptance_window == b.acceptance_window &&
+           a.acceptance_total == b.acceptance_total;
+  }
 };
 
 struct PosteriorSample {

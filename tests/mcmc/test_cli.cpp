@@ -206,7 +206,9 @@ TEST_CASE("cli: a full run writes complete outputs atomically and a correct summ
   }
   CHECK(lines == 20);
   const std::string trace = slurp(out / "trace.csv");
-  CHECK(trace.rfind("chain,iteration,log_posterior,", 0) == 0);
+  CHECK(trace.rfind("chain,iteration,log_posterior,log_likelihood,log_prior,best_log_posterior,"
+                    "acceptance_window,acceptance_total,acceptance_UP,acceptance_DOWN,acceptance_RESAMPLE\n",
+                    0) == 0);
   CHECK(std::count(trace.begin(), trace.end(), '\n') == 1 + 2 * 20);
 }
 

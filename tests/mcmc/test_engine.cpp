@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <atomic>
+#include <cmath>
 #include <stdexcept>
 
 #include "runtime/mcmc/engine.h"
@@ -117,7 +118,15 @@ TEST_CASE("declined proposals are counted as rejections") {
                                            {{"UP", 0.25}, {"DOWN", 0.25}, {"NOPE", 0.5}}));
   rm::EngineConfig cfg;
   cfg.iterations = 10000;
+  cfg.trace_every = 1000;
   const auto res = engine.run(cfg);
+  REQUIRE(res.chains[0].trace.size() == 10);
+  for (const auto& t : res.chains[0].trace) {
+    REQUIRE(t.kernel_acceptance_window.size() == 3);
+    CHECK(t.kernel_acceptance_window[2] == 0.0);  // NOPE never accepted
+    CHECK(t.kernel_acceptance_window[0] >= 0.0);
+    CHECK(t.kernel_acceptance_window[0] <= 1.0);
+  }
   const auto& up = res.kernels[0];
   const auto& down = res.kernels[1];
   const auto& nope = res.kernels[2];
@@ -169,6 +178,28 @@ TEST_CASE("progress is reported with sane numbers and a final call") {
   CHECK(last.finished);
   CHECK(last.iterations_done == 400000);
   CHECK(last.acceptance_rate > 0.0);
+}
+
+TEST_CASE("per-kernel trace acceptance is NaN for kernels not selected in the window") {
+  const auto engine = toy_engine();  // row [0, 100) has RESAMPLE, row [100, inf) does not
+  rm::EngineConfig cfg;
+  cfg.iterations = 1000;
+  cfg.trace_every = 100;
+  const auto res = engine.run(cfg);
+  const auto& trace = res.chains[0].trace;
+  REQUIRE(trace.size() == 10);
+  CHECK_FALSE(std::isnan(trace[0].kernel_acceptance_window[2]));
+  for (std::size_t i = 1; i < trace.size(); ++i) CHECK(std::isnan(trace[i].kernel_acceptance_window[2]));
+}
+
+TEST_CASE("an exception from the progress callback stops the run cleanly") {
+  const auto engine = toy_engine();
+  rm::EngineConfig cfg;
+  cfg.iterations = 1'000'000'000;
+  cfg.chains = 2;
+  cfg.progress_interval_s = 0.01;
+  cfg.progress = [](const rm::Progress&) { throw std::runtime_error("display broke"); };
+  CHECK_THROWS_WITH(engine.run(cfg), "display broke");
 }
 
 namespace {
