@@ -27,8 +27,7 @@ Predicted predicted_class(const CellCounts& c) {
 
 CoverageGrid::CoverageGrid(const ClassGrid& observed) : rows_(observed.rows), cols_(observed.cols) {
   if (observed.empty()) throw std::invalid_argument("CoverageGrid: empty class grid");
-  obs_.resize(static_cast<std::size_t>(rows_) * static_cast<std::size_t>(cols_));
-  cells_.resize(obs_.size());
+  cells_.resize(static_cast<std::size_t>(rows_) * static_cast<std::size_t>(cols_));
   for (int r = 0; r < rows_; ++r) {
     const std::uint8_t* row = observed.ptr<std::uint8_t>(r);
     for (int c = 0; c < cols_; ++c) {
@@ -36,23 +35,28 @@ CoverageGrid::CoverageGrid(const ClassGrid& observed) : rows_(observed.rows), co
         throw std::invalid_argument("CoverageGrid: class grid value " + std::to_string(row[c]) +
                                     " at row " + std::to_string(r) + ", col " +
                                     std::to_string(c) + " is not a Cell (0..2)");
-      obs_[index(r, c)] = row[c];
-      ++hist_[static_cast<std::size_t>(
-          histogram_index(0, static_cast<Cell>(row[c]), Predicted::Unknown))];
+      CellCounts& cc = cells_[index(r, c)];
+      cc.observed = row[c];
+      cc.key = static_cast<std::uint8_t>(histogram_index(0, static_cast<Cell>(row[c]), Predicted::Unknown));
+      ++hist_[cc.key];
     }
   }
 }
 
 namespace {
-int key_of(const CellCounts& c, std::uint8_t obs) {
-  return lut_class_of(c) * 9 + obs * 3 + static_cast<int>(predicted_class(c));
+// Histogram index of a cell from its counts, using the cached total (hot path).
+int key_of(const CellCounts& c) {
+  const int lut = c.area[3] ? 3 : c.area[2] ? 2 : c.area[1] ? 1 : 0;
+  const Predicted p = c.door ? Predicted::Free
+                      : c.wall ? Predicted::Wall
+                      : c.total ? Predicted::Free
+                                : Predicted::Unknown;
+  return lut * 9 + c.observed * 3 + static_cast<int>(p);
 }
-int gamma_of(const CellCounts& c) { return std::max(covering_units(c) - 1, 0); }
+static_assert(kMaxLutClasses == 4, "key_of assumes four likelihood classes");
 
-void add_count(std::uint16_t& v, int d) {
-  const int n = static_cast<int>(v) + d;
-  if (n < 0 || n > 0xFFFF) throw std::logic_error("CoverageGrid: cell count out of range");
-  v = static_cast<std::uint16_t>(n);
+[[noreturn]] void count_out_of_range() {
+  throw std::logic_error("CoverageGrid: cell count out of range (removing what was never added?)");
 }
 
 bool in(const RowSpan& s, int x) { return x >= s.x0 && x < s.x1; }
@@ -70,20 +74,26 @@ int breaks(const RowSpan* spans, int n, int* out) {
 }
 }  // namespace
 
-void CoverageGrid::bump(std::size_t idx, int lut_class, int d_area, int d_wall, int d_door) {
+inline void CoverageGrid::bump(std::size_t idx, int lut_class, int d_area, int d_wall, int d_door) {
   ++visited_;
   CellCounts& c = cells_[idx];
-  const int k0 = key_of(c, obs_[idx]);
-  const int g0 = gamma_of(c);
-  if (d_area) add_count(c.area[static_cast<std::size_t>(lut_class)], d_area);
-  if (d_wall) add_count(c.wall, d_wall);
-  if (d_door) add_count(c.door, d_door);
-  const int k1 = key_of(c, obs_[idx]);
+  const int k0 = c.key;
+  const int t0 = c.total;
+  auto& slot = c.area[static_cast<std::size_t>(lut_class)];
+  const int a = slot + d_area, t = t0 + d_area, w = c.wall + d_wall, d = c.door + d_door;
+  if ((a | t | w | d) < 0 || (a | t | w | d) > 0xFFFF) [[unlikely]]
+    count_out_of_range();
+  slot = static_cast<std::uint16_t>(a);
+  c.total = static_cast<std::uint16_t>(t);
+  c.wall = static_cast<std::uint16_t>(w);
+  c.door = static_cast<std::uint16_t>(d);
+  const int k1 = key_of(c);
   if (k0 != k1) {
+    c.key = static_cast<std::uint8_t>(k1);
     --hist_[static_cast<std::size_t>(k0)];
     ++hist_[static_cast<std::size_t>(k1)];
   }
-  overlap_ += gamma_of(c) - g0;
+  overlap_ += std::max(t - 1, 0) - std::max(t0 - 1, 0);
 }
 
 void CoverageGrid::unit_rows(const UnitRaster* before, const UnitRaster* after, int lut_class) {

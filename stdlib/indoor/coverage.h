@@ -27,7 +27,13 @@ struct CellCounts {
   std::array<std::uint16_t, kMaxLutClasses> area{};  // units covering the cell, per lut class
   std::uint16_t wall = 0;                            // wall bands covering the cell
   std::uint16_t door = 0;                            // doors covering the cell
+  // Kept by CoverageGrid only (the full recomputation ignores them): sum of `area`, the
+  // observed class, and the cell's current histogram index.
+  std::uint16_t total = 0;
+  std::uint8_t observed = 0;
+  std::uint8_t key = 0;
 };
+static_assert(sizeof(CellCounts) == 16, "one cell's counts fit 16 bytes");
 
 // Classification shared by the incremental grid and the full recomputation.
 Predicted predicted_class(const CellCounts& c);
@@ -54,7 +60,7 @@ class CoverageGrid {
   // Sum over cells of max(sigma - 1, 0), sigma = number of units covering the cell (eq. 3.5).
   std::int64_t overlap() const { return overlap_; }
 
-  Cell observed(int row, int col) const { return static_cast<Cell>(obs_[index(row, col)]); }
+  Cell observed(int row, int col) const { return static_cast<Cell>(cells_[index(row, col)].observed); }
   const CellCounts& counts(int row, int col) const { return cells_[index(row, col)]; }
   Predicted predicted(int row, int col) const { return predicted_class(counts(row, col)); }
 
@@ -68,7 +74,6 @@ class CoverageGrid {
   void bump(std::size_t idx, int lut_class, int d_area, int d_wall, int d_door);
 
   int rows_ = 0, cols_ = 0;
-  std::vector<std::uint8_t> obs_;
   std::vector<CellCounts> cells_;
   Histogram hist_{};
   std::int64_t overlap_ = 0;

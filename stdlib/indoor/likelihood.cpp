@@ -59,6 +59,11 @@ double cell_prediction_rate(const Histogram& h) {
 FullScore full_score(const ClassGrid& observed, const World& world, const LikelihoodModel& lik,
                      const RasterParams& raster) {
   const int rows = observed.rows, cols = observed.cols;
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c)
+      if (observed(r, c) > 2)
+        throw std::invalid_argument("full_score: class grid value at row " + std::to_string(r) + ", col " +
+                                    std::to_string(c) + " is not a Cell (0..2)");
   std::vector<CellCounts> cells(static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols));
   auto at = [&](int r, int c) -> CellCounts& {
     return cells[static_cast<std::size_t>(r) * static_cast<std::size_t>(cols) +
