@@ -6,11 +6,8 @@
 
 namespace ksmc::stdlib::tabletop::sim {
 
-namespace {
-
-// Every box still present touches something present (table included) or is hidden high enough.
-bool removal_is_clean(std::span<const Box> boxes, const Relations& rel, const std::vector<bool>& removed,
-                      const CorruptionParams& params) {
+bool estimate_is_consistent(std::span<const Box> boxes, const Relations& rel, const std::vector<bool>& removed,
+                            const CorruptionParams& params) {
   const auto hidden = hidden_boxes(boxes.size(), rel, removed);
   for (std::size_t i = 0; i < boxes.size(); ++i) {
     if (removed[i]) continue;
@@ -40,8 +37,6 @@ bool removal_is_clean(std::span<const Box> boxes, const Relations& rel, const st
   }
   return true;
 }
-
-}  // namespace
 
 std::vector<bool> hidden_boxes(std::size_t count, const Relations& rel, const std::vector<bool>& removed) {
   std::vector<bool> has_object_support(count, false);
@@ -73,7 +68,7 @@ std::vector<bool> choose_undetected(Rng& rng, std::span<const Box> boxes, const 
     if (!supporter[j] || !rng.bernoulli(params.hidden_rate)) continue;
     removed[j] = true;
     const bool leaves_one = std::count(removed.begin(), removed.end(), false) > 0;
-    if (!leaves_one || !removal_is_clean(boxes, rel, removed, params)) removed[j] = false;
+    if (!leaves_one || !estimate_is_consistent(boxes, rel, removed, params)) removed[j] = false;
   }
   return removed;
 }

@@ -31,6 +31,12 @@ struct CorruptionParams {
 std::vector<bool> choose_undetected(Rng& rng, std::span<const Box> boxes, const Relations& rel,
                                     const CorruptionParams& params);
 
+// True when, with the `removed` boxes missing from the estimate, every present box either still
+// touches something present (table included) or is hidden more than min_hidden_height above
+// the table. Used for undetected supporters and for boxes whose estimate is moved away.
+bool estimate_is_consistent(std::span<const Box> boxes, const Relations& rel, const std::vector<bool>& removed,
+                            const CorruptionParams& params);
+
 // Boxes present in the estimate whose every supporter was removed (and that are not on the table).
 std::vector<bool> hidden_boxes(std::size_t count, const Relations& rel, const std::vector<bool>& removed);
 

@@ -94,10 +94,17 @@ void corrupt(std::uint64_t seed, int attempt, const GeneratorOptions& o, Draft& 
     for (std::size_t c = 0; c < real_count; ++c) {
       const auto& obj = d.objects[c];
       const bool is_target = std::find(targeted.begin(), targeted.end(), c) != targeted.end();
-      if (obj.false_kind == FalseKind::none && !obj.hidden && !is_target &&
-          !supports_present(obj.physical, d.relations, d.physical)) {
-        movable.push_back(c);
+      if (obj.false_kind != FalseKind::none || obj.hidden || is_target ||
+          supports_present(obj.physical, d.relations, d.physical)) {
+        continue;
       }
+      // Boxes that touch only this one must not be left hovering by moving its estimate away.
+      std::vector<bool> missing = removed;
+      for (const auto& other : d.objects) {
+        if (other.false_kind != FalseKind::none && other.physical >= 0) missing[static_cast<std::size_t>(other.physical)] = true;
+      }
+      missing[static_cast<std::size_t>(obj.physical)] = true;
+      if (estimate_is_consistent(boxes, d.relations, missing, o.corruption)) movable.push_back(c);
     }
     if (movable.empty()) moved = false;
     const std::size_t mover = moved ? movable[static_cast<std::size_t>(rng.uniform_int(0, static_cast<int>(movable.size()) - 1))] : 0;
