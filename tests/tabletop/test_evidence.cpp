@@ -5,6 +5,7 @@
 #include <random>
 
 #include "stdlib/tabletop/evidence.h"
+#include "stdlib/tabletop/evidence_db.h"
 #include "tests/tabletop/tabletop_test_util.h"
 
 using namespace ksmc::stdlib::tabletop;
@@ -68,4 +69,30 @@ TEST_CASE("incremental re-extraction equals full extraction", "[evidence]") {
   }
   // The walk must actually change relations for the comparison to mean something.
   CHECK(changed >= 15);
+}
+
+TEST_CASE("evidence as closed-world .db text", "[evidence]") {
+  Scene s = stack_scene();
+  const Evidence ev = extract_evidence(s);
+  const std::string db = evidence_db(ev);
+  // 3 unary predicates × 4 bodies + 3 binary predicates × 16 pairs, plus the comment line.
+  CHECK(std::count(db.begin(), db.end(), '\n') == 1 + 3 * 4 + 3 * 16);
+  CHECK(db.find("\ntable(table)\n") != std::string::npos);
+  CHECK(db.find("\n!table(a)\n") != std::string::npos);
+  CHECK(db.find("\nhover(c)\n") != std::string::npos);
+  CHECK(db.find("\n!hover(b)\n") != std::string::npos);
+  CHECK(db.find("\ncontact(b, a)\n") != std::string::npos);
+  CHECK(db.find("\n!contact(a, a)\n") != std::string::npos);
+  CHECK(db.find("\nhigher(c, b)\n") != std::string::npos);
+  CHECK(db.find("\n!higher(b, c)\n") != std::string::npos);
+  // Every true atom of atoms() appears positively, and nothing else does.
+  std::size_t positives = 0;
+  std::size_t pos = 0;
+  while ((pos = db.find('\n', pos)) != std::string::npos) {
+    ++pos;
+    if (pos < db.size() && db[pos] != '!' && db[pos] != '/') ++positives;
+  }
+  CHECK(positives == ev.atoms().size());
+  s.objects[0].id = "a b";
+  CHECK_THROWS_WITH(evidence_db(extract_evidence(s)), Catch::Contains("id \"a b\" is not a valid .db constant"));
 }
