@@ -3,7 +3,9 @@
 // A free atom is resampled from its full conditional; an exactly-one block is
 // resampled as one categorical variable over its atoms. Hard clauses have zero
 // probability: the chain starts from a state satisfying them (found by WalkSAT) and a
-// value violating one is never chosen. Marginals are Rao-Blackwellised (the average
+// value violating one is never chosen. Atoms tied by hard equivalences (pairs of hard
+// clauses a v b, !a v !b, e.g. from SaLe(a,b) => SaLe(b,a) both ways) are flipped
+// together, which single-site Gibbs could never do. Marginals are Rao-Blackwellised (the average
 // of the conditional probabilities computed at each update), which has lower variance
 // than counting. Deterministic for a seed.
 #pragma once

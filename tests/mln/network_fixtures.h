@@ -62,4 +62,24 @@ inline runtime::mln::GroundNetwork mixed_network() {
   return net;
 }
 
+// Hard equivalences (like SaLe(a,b) <=> SaLe(b,a)): atoms 0 <=> 1 and 2 <=> !3, with
+// soft fields; single-site Gibbs could never move these atoms.
+inline runtime::mln::GroundNetwork equivalence_network() {
+  using namespace runtime::mln;
+  GroundNetwork net;
+  net.add_atoms(5);
+  auto soft = [&](std::initializer_list<Lit> l, double w) { net.add_clause(std::vector<Lit>(l), w); };
+  auto hard = [&](std::initializer_list<Lit> l) { net.add_hard_clause(std::vector<Lit>(l)); };
+  hard({make_lit(0, true), make_lit(1, false)});
+  hard({make_lit(0, false), make_lit(1, true)});
+  hard({make_lit(2, false), make_lit(3, false)});
+  hard({make_lit(2, true), make_lit(3, true)});
+  soft({make_lit(0, false)}, 1.0);
+  soft({make_lit(1, false)}, -0.4);
+  soft({make_lit(1, true), make_lit(4, false)}, 0.8);
+  soft({make_lit(3, false), make_lit(4, true)}, 1.3);
+  soft({make_lit(2, false)}, 0.2);
+  return net;
+}
+
 }  // namespace ksmc::tests::mln

@@ -5,6 +5,7 @@
 #include <random>
 #include <sstream>
 
+#include "runtime/mln/components.h"
 #include "runtime/mln/error.h"
 #include "runtime/mln/exact.h"
 #include "runtime/mln/gibbs.h"
@@ -33,6 +34,7 @@ struct Case {
 std::vector<Case> sampler_cases() {
   std::vector<Case> cases;
   cases.push_back({"mixed blocks+hard", ksmc::tests::mln::mixed_network()});
+  cases.push_back({"hard equivalences", ksmc::tests::mln::equivalence_network()});
   // Random soft knowledge bases (with blocks sometimes) and a few with hard clauses
   // that leave the space connected under single moves (checked: both samplers agree).
   std::mt19937_64 rng(77);
@@ -42,6 +44,9 @@ std::vector<Case> sampler_cases() {
     for (auto& c : kb.program.clauses) c.hard = false, c.weight = c.weight == 0.0 ? 1.0 : c.weight;
     auto g = ground(kb.program, kb.domain, *kb.evidence);
     if (g.network.num_atoms() < 4) continue;
+    std::size_t largest = 0;  // want coupled atoms, not independent ones
+    for (const auto& comp : split_components(g.network)) largest = std::max(largest, comp.atoms.size());
+    if (largest < 3) continue;
     cases.push_back({"random soft KB " + std::to_string(made), std::move(g.network)});
     ++made;
   }
