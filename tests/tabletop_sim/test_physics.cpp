@@ -32,6 +32,17 @@ TEST_CASE("A dropped box settles flat on the table", "[tabletop_sim][physics]") 
   CHECK(r.time >= SettleParams{}.creep_window);
 }
 
+TEST_CASE("The creep window need not be a multiple of the snapshot spacing", "[tabletop_sim][physics]") {
+  SettleParams p;
+  p.creep_window = 0.73;  // 175.2 steps at 240 Hz
+  p.min_time = 0.2;
+  const std::vector<SimBody> bodies{body({0.1, 0.1, 0.05}, {0, 0, 0.03})};
+  const auto r = settle(bodies, TableSpec{}, p);
+  REQUIRE(r.status == SettleStatus::settled);
+  CHECK(r.time >= 0.73);
+  CHECK(r.time < 1.5);
+}
+
 TEST_CASE("A stack of three settles and is a support chain", "[tabletop_sim][physics]") {
   const std::vector<SimBody> bodies{
       body({0.22, 0.3, 0.04}, {0, 0, 0.022}),

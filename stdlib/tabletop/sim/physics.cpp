@@ -127,9 +127,10 @@ SettleResult settle(std::span<const SimBody> bodies, const TableSpec& table, con
       }
     }
     history.emplace_back(step, now);
-    while (!history.empty() && history.front().first < step - creep_steps) history.pop_front();
+    // Keep the newest snapshot that is at least one creep window old, and everything after it.
+    while (history.size() > 1 && history[1].first <= step - creep_steps) history.pop_front();
 
-    if (step < min_steps || quiet < rest_steps || history.front().first != step - creep_steps) continue;
+    if (step < min_steps || quiet < rest_steps || history.front().first > step - creep_steps) continue;
     const auto& before = history.front().second;
     bool creeping = false;
     for (std::size_t i = 0; i < now.size() && !creeping; ++i) {
