@@ -19,7 +19,7 @@ item
   | 'extract' atom '=' call ';'                                          # extractItem
   | 'prior' priorForm ';'                                                # priorItem
   | 'likelihood' call ';'                                                # likelihoodItem
-  | 'kernel' 'pair' IDENT '/' IDENT kernelParams? '=' call (',' call)* ';'  # kernelPairItem
+  | 'kernel' 'pair' IDENT '/' IDENT kernelParams? ('=' call (',' call)*)? ';' # kernelPairItem
   | 'kernel' IDENT kernelParams? ('reverse' IDENT)? ('=' call (',' call)*)? ';' # kernelItem
   | 'schedule' '{' scheduleRow* '}'                                      # scheduleItem
   ;
@@ -35,7 +35,8 @@ typeRef  : IDENT ('[' ']')*                                              # named
          ;
 
 // ---- rules -----------------------------------------------------------------
-ruleHead : hard='hard'? (weightProb='prob' number ':' | weightRaw='w' number ':')? ;
+// `w 1.5:` is matched as IDENT so that `w` stays usable as a name; build checks the spelling.
+ruleHead : hard='hard'? (weightProb='prob' number ':' | weightRaw=IDENT number ':')? ;
 ruleBody : 'exactly' 'one' 'of' atom (',' atom)+                         # exactlyOneBody
          | formula                                                       # formulaBody
          ;

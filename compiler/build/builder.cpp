@@ -405,7 +405,14 @@ class Builder {
     r.head_loc = loc(c);
     r.hard = h->hard != nullptr;
     if (h->weightProb != nullptr) r.prob = number(h->number());
-    if (h->weightRaw != nullptr) r.weight = number(h->number());
+    if (h->weightRaw != nullptr) {
+      if (h->weightRaw->getText() != "w") {
+        diags_.error(loc(h->weightRaw), "unknown rule weight '" + h->weightRaw->getText() +
+                                            "'; write 'hard', 'prob p:' or 'w x:'");
+        return false;
+      }
+      r.weight = number(h->number());
+    }
     r.source_text = source_text(c);
     if (auto* ex = dynamic_cast<P::ExactlyOneBodyContext*>(c->ruleBody())) {
       r.exactly_one = true;

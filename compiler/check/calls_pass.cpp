@@ -21,6 +21,12 @@ std::string article(const std::string& w) {
   return (!w.empty() && std::string("aeiouAEIOU").find(w[0]) != std::string::npos) ? "an " : "a ";
 }
 
+// "a length (mm)", "an angle (rad, deg)", "a value in pixels (px)" (plural quantity names).
+std::string quantity_phrase(const std::string& name, const std::string& units) {
+  const std::string head = (!name.empty() && name.back() == 's') ? "a value in " + name : article(name) + name;
+  return units.empty() ? head : head + " (" + units + ")";
+}
+
 class Checker {
  public:
   explicit Checker(Context& ctx) : ctx_(ctx), s_(ctx.symbols) {}
@@ -60,7 +66,7 @@ class Checker {
     if (t.base == "bool") return "a boolean";
     if (t.base == "query" || t.base == "evidence") return "a predicate name";
     const TypeSym* ts = s_.type(t.base);
-    if (ts != nullptr && ts->kind == TypeSym::Kind::Quantity) return article(t.base) + t.base + " (" + t.unit + ")";
+    if (ts != nullptr && ts->kind == TypeSym::Kind::Quantity) return quantity_phrase(t.base, t.unit);
     if (ts != nullptr && ts->kind == TypeSym::Kind::Domain) return "a variable of type '" + t.base + "'";
     return "a value of type '" + t.base + "'";
   }
@@ -76,7 +82,7 @@ class Checker {
     if (ts != nullptr && ts->kind == TypeSym::Kind::Quantity) {
       std::string units;
       for (const ast::UnitDef& u : ts->quantity->units) units += (units.empty() ? "" : ", ") + u.name.name;
-      return article(p.name) + p.name + (units.empty() ? "" : " (" + units + ")");
+      return quantity_phrase(p.name, units);
     }
     if (p.name == "entity") return "a variable of a domain type";
     if (ts != nullptr && ts->kind == TypeSym::Kind::Domain) return "a variable of type '" + p.name + "'";

@@ -3,6 +3,7 @@
 #include "compiler/diag/utf8.h"
 
 #include <algorithm>
+#include <climits>
 #include <tuple>
 
 namespace ksmc::compiler::diag {
@@ -68,8 +69,10 @@ int DiagEngine::errors_in(int file) const {
 }
 
 void DiagEngine::flush(std::ostream& out) {
+  // Line 0 marks a file-level diagnostic, printed after the file's located ones.
   auto key = [](const Diagnostic& d) {
-    return std::make_tuple(d.loc.file, d.loc.line, d.loc.col, d.severity == Severity::Warning, d.message);
+    return std::make_tuple(d.loc.file, d.loc.line == 0 ? INT_MAX : d.loc.line, d.loc.col, d.severity == Severity::Warning,
+                           d.message);
   };
   std::stable_sort(diags_.begin(), diags_.end(), [&](const Diagnostic& a, const Diagnostic& b) { return key(a) < key(b); });
   diags_.erase(std::unique(diags_.begin(), diags_.end(),
@@ -79,6 +82,10 @@ void DiagEngine::flush(std::ostream& out) {
     const char* sev = d.severity == Severity::Error ? "error" : "warning";
     if (d.loc.file < 0 || static_cast<std::size_t>(d.loc.file) >= sources_.size()) {
       out << "ksmc: " << sev << ": " << d.message << '\n';
+      continue;
+    }
+    if (d.loc.line == 0) {
+      out << sources_.path(d.loc.file) << ": " << sev << ": " << d.message << '\n';
       continue;
     }
     out << sources_.path(d.loc.file) << ':' << d.loc.line << ':' << d.loc.col << ": " << sev << ": " << d.message

@@ -18,7 +18,7 @@ enum class Severity { Warning, Error };
 
 struct Diagnostic {
   Severity severity = Severity::Error;
-  ast::Loc loc;  // file < 0: no location (printed as "ksmc: error: ...")
+  ast::Loc loc;  // file < 0: no location ("ksmc: error: ..."); line 0: whole file ("path: error: ...")
   std::string message;
 };
 

@@ -50,6 +50,7 @@ int cmd_check(Invocation& inv) {
     driver::FrontendResult r = driver::run_frontend(path, inv.load, sources, diags);
     const int errors = diags.error_count();
     const int warnings = diags.warning_count();
+    std::cout.flush();  // keep stdout and stderr in order when both go to one terminal
     diags.flush(std::cerr);
     if (inv.dump_ast && r.loaded) ast::dump(r.program.modules.front(), std::cout);
     if (errors == 0 && r.loaded) {
@@ -60,6 +61,7 @@ int cmd_check(Invocation& inv) {
                 << (warnings > 0 ? ", " + plural(warnings, "warning") : std::string()) << "\n";
       status = kExitErrors;
     }
+    std::cout.flush();
   }
   return status;
 }

@@ -1,5 +1,6 @@
 #include "compiler/parse/error_strategy.h"
 
+#include <cctype>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -122,7 +123,7 @@ ast::Loc FriendlyErrorStrategy::loc_after(const antlr4::Token* t) const {
 void FriendlyErrorStrategy::emit(const ast::Loc& loc, std::string message) {
   diags_.error(loc, std::move(message));
   if (diags_.errors_in(file_) >= max_errors_) {
-    diags_.error(loc, "too many syntax errors; giving up on this file");
+    diags_.error(ast::Loc{file_, 0, 0, 0}, "too many syntax errors; giving up on this file");
     throw antlr4::ParseCancellationException("too many errors");
   }
 }
@@ -161,18 +162,30 @@ void FriendlyErrorStrategy::report_unexpected(antlr4::Parser* parser, antlr4::To
     emit(loc_of(t), "expected a declaration, found " + describe(t));
     return;
   }
-  // A missing terminator is reported right after the previous token.
+  // A missing terminator is reported right after the previous token: when it is the only
+  // choice, or when it is one choice and the offending token starts a new line.
   const std::size_t semi_type = literal_type(parser, "';'");
   const std::size_t dot_type = literal_type(parser, "'.'");
-  if (only(expected, semi_type) || only(expected, dot_type)) {
-    const bool semi = only(expected, semi_type);
-    antlr4::Token* prev = parser->getTokenStream()->LT(-1);
+  antlr4::Token* prev = parser->getTokenStream()->LT(-1);
+  const bool new_line = t != nullptr && prev != nullptr && t->getLine() > prev->getLine();
+  const bool want_semi = only(expected, semi_type) || (new_line && expected.contains(semi_type));
+  const bool want_dot = only(expected, dot_type) || (new_line && expected.contains(dot_type));
+  if (want_semi || want_dot) {
+    const bool semi = want_semi;
     emit(loc_after(prev), semi ? "expected ';' after " + context_name(ctx) + ", found " + describe(t)
                                : "expected '.' at the end of the rule, found " + describe(t));
     return;
   }
   std::string msg = "unexpected " + describe(t) + " in " + context_name(ctx);
   if (!list.empty()) msg += "; expected " + list;
+  // A keyword where a name was expected: say so.
+  if (t != nullptr && expected.contains(static_cast<std::size_t>(P::IDENT))) {
+    const std::string text = t->getText();
+    const std::string lit = parser->getVocabulary().getLiteralName(t->getType());
+    if (!text.empty() && std::isalpha(static_cast<unsigned char>(text[0])) != 0 && lit == "'" + text + "'") {
+      msg += " ('" + text + "' is a reserved word)";
+    }
+  }
   emit(loc_of(t), std::move(msg));
 }
 
@@ -205,9 +218,11 @@ void FriendlyErrorStrategy::reportMissingToken(antlr4::Parser* parser) {
   if (only(expected, literal_type(parser, "'.'"))) {
     emit(loc_after(prev), "expected '.' at the end of the rule, found " + describe(t));
   } else {
-    emit(loc_after(prev), "expected " + (what.empty() ? std::string("more input") : what) + " after " +
-                              (only(expected, literal_type(parser, "';'")) ? context_name(parser->getContext()) : describe(prev)) +
-                              ", found " + describe(t));
+    if (only(expected, literal_type(parser, "';'"))) {
+      emit(loc_after(prev), "expected ';' after " + context_name(parser->getContext()) + ", found " + describe(t));
+    } else {
+      emit(loc_of(t), "missing " + (what.empty() ? std::string("input") : what) + " before " + describe(t));
+    }
   }
 }
 

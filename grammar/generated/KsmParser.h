@@ -21,9 +21,8 @@ public:
     T__32 = 33, T__33 = 34, T__34 = 35, T__35 = 36, T__36 = 37, T__37 = 38, 
     T__38 = 39, T__39 = 40, T__40 = 41, T__41 = 42, T__42 = 43, T__43 = 44, 
     T__44 = 45, T__45 = 46, T__46 = 47, T__47 = 48, T__48 = 49, T__49 = 50, 
-    T__50 = 51, T__51 = 52, T__52 = 53, T__53 = 54, T__54 = 55, NUMBER = 56, 
-    IDENT = 57, STRING = 58, LINE_COMMENT = 59, BLOCK_COMMENT = 60, WS = 61, 
-    ERRCHAR = 62
+    T__50 = 51, T__51 = 52, T__52 = 53, T__53 = 54, NUMBER = 55, IDENT = 56, 
+    STRING = 57, LINE_COMMENT = 58, BLOCK_COMMENT = 59, WS = 60, ERRCHAR = 61
   };
 
   enum {
@@ -126,9 +125,9 @@ public:
 
     std::vector<antlr4::tree::TerminalNode *> IDENT();
     antlr4::tree::TerminalNode* IDENT(size_t i);
+    KernelParamsContext *kernelParams();
     std::vector<CallContext *> call();
     CallContext* call(size_t i);
-    KernelParamsContext *kernelParams();
   };
 
   class  PriorItemContext : public ItemContext {
@@ -343,6 +342,7 @@ public:
     RuleHeadContext(antlr4::ParserRuleContext *parent, size_t invokingState);
     virtual size_t getRuleIndex() const override;
     NumberContext *number();
+    antlr4::tree::TerminalNode *IDENT();
 
    
   };
