@@ -116,7 +116,7 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
     app.add_option("--thin", cf.thin, "iterations between stored samples")->check(CLI::PositiveNumber)->capture_default_str();
     app.add_option("--burn-in", cf.burn_in, "iterations before samples are taken (default: half)");
     app.add_flag("--trace", cf.trace, "write trace.csv (log posterior and acceptance rate per chain)");
-    app.add_option("--trace-every", cf.trace_every, "iterations between trace rows (default: iterations/1000)");
+    app.add_option("--trace-every", cf.trace_every, "iterations between trace rows (default: iterations/1000; implies --trace)");
     app.add_flag("--quiet,-q", cf.quiet, "no progress display");
     add_domain_flags(app, spec, dst);
   } catch (const CLI::Error& e) {
@@ -187,6 +187,7 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
   cfg.burn_in = cf.burn_in.value_or(cf.iterations / 2);
   cfg.samples = cf.samples;
   cfg.thin = cf.thin;
+  if (cf.trace_every != 0) cf.trace = true;  // --trace-every implies --trace
   if (cf.trace) cfg.trace_every = cf.trace_every != 0 ? cf.trace_every : std::max<std::uint64_t>(1, cf.iterations / 1000);
   ProgressPrinter printer(io.err, io.tty);
   if (!cf.quiet) cfg.progress = [&printer](const mcmc::Progress& p) { printer(p); };

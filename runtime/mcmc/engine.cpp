@@ -59,6 +59,9 @@ Engine::Engine(ModelFactory factory, KernelList kernels, Schedule schedule)
     : factory_(std::move(factory)), kernels_(std::move(kernels)), schedule_(std::move(schedule)) {
   if (!factory_) throw std::invalid_argument("engine: no model factory");
   const auto infos = kernel_infos(kernels_);
+  if (infos.empty() || schedule_.row_count() == 0) {
+    throw std::invalid_argument("engine: no kernels or an empty schedule");
+  }
   if (infos.size() != schedule_.kernel_count()) {
     throw std::invalid_argument(fmt::format("engine: {} kernels but the schedule has {}",
                                             infos.size(), schedule_.kernel_count()));

@@ -233,4 +233,5 @@ TEST_CASE("engine rejects a kernel table that does not match the schedule") {
   const auto schedule = rm::Schedule::constant(rm::kernel_infos(kernels), {{"RESAMPLE", 1.0}});
   const rm::KernelList swapped = {kernels[1], kernels[0], kernels[2]};
   CHECK_THROWS_AS(rm::Engine(toy_factory(), swapped, schedule), std::invalid_argument);
+  CHECK_THROWS_AS(rm::Engine(toy_factory(), {}, rm::Schedule()), std::invalid_argument);
 }
