@@ -13,7 +13,9 @@ std::vector<double> candidate_weights(const Context& c, std::span<const Candidat
   w.reserve(cands.size());
   for (const auto& k : cands) {
     const double v = k.weight * c.p.orientation.factor(k.rect.theta);
-    w.push_back(std::isfinite(v) && v > 0.0 && k.rect.w > 0.0 && k.rect.h > 0.0 ? v : 0.0);
+    const bool finite_rect = std::isfinite(k.rect.cx) && std::isfinite(k.rect.cy) && std::isfinite(k.rect.w) &&
+                             std::isfinite(k.rect.h) && std::isfinite(k.rect.theta);
+    w.push_back(std::isfinite(v) && v > 0.0 && finite_rect && k.rect.w > 0.0 && k.rect.h > 0.0 ? v : 0.0);
   }
   return w;
 }

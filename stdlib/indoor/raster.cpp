@@ -7,7 +7,10 @@
 namespace ksmc::stdlib::indoor {
 
 SpanRaster::SpanRaster(const OrientedRect& r, int cols) : cols_(cols) {
-  if (!(r.w > 0.0) || !(r.h > 0.0) || !std::isfinite(r.cx) || !std::isfinite(r.cy)) return;
+  // Degenerate or non-finite rectangles cover no cell.
+  if (!(r.w > 0.0) || !(r.h > 0.0) || !std::isfinite(r.w) || !std::isfinite(r.h) || !std::isfinite(r.cx) ||
+      !std::isfinite(r.cy) || !std::isfinite(r.theta))
+    return;
   empty_ = false;
   c_ = std::cos(r.theta);
   s_ = std::sin(r.theta);
