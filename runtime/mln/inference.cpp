@@ -48,6 +48,7 @@ InferenceResult infer(const GroundNetwork& net, const InferenceOptions& options)
     const GroundNetwork sub = extract_component(net, comp);
     McSatOptions mo = options.mcsat;
     mo.seed = options.mcsat.seed * 1000003ULL + i;
+    mo.on_sample = nullptr;  // states of a sub-network: meaningless to the caller's observer
     const auto sr = mc_sat(sub, mo);
     for (std::size_t k = 0; k < comp.atoms.size(); ++k) r.marginals[comp.atoms[k]] = sr.marginals[k];
     r.samples = std::max(r.samples, sr.samples);

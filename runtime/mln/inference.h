@@ -1,6 +1,7 @@
 // One entry point over all engines: exact, gibbs, mcsat, or auto (exact for every
 // component small enough, MC-SAT for the rest; log Z exact or AIS-estimated per
-// component). MAP is separate: max_walksat() or exact_map().
+// component). In auto mode MC-SAT runs on each large component separately, so
+// mcsat.on_sample is not called. MAP is separate: max_walksat() or exact_map().
 #pragma once
 
 #include <string>
