@@ -64,6 +64,16 @@ const T* find_sorted(const std::vector<T>& v, Id id) {
   return (it != v.end() && it->id == id) ? &*it : nullptr;
 }
 
+// Exact equality: a move's 'before' must be the stored member, or the score would drift.
+bool same_unit(const Unit& a, const Unit& b) {
+  return a.id == b.id && a.rect.cx == b.rect.cx && a.rect.cy == b.rect.cy && a.rect.w == b.rect.w &&
+         a.rect.h == b.rect.h && a.rect.theta == b.rect.theta && a.lut_class == b.lut_class;
+}
+bool same_door(const Door& a, const Door& b) {
+  return a.id == b.id && a.unit_a == b.unit_a && a.unit_b == b.unit_b && a.a.x == b.a.x && a.a.y == b.a.y &&
+         a.b.x == b.b.x && a.b.y == b.b.y;
+}
+
 [[noreturn]] void misfit(const char* what, std::uint32_t id) {
   throw std::logic_error(std::string("World::apply: ") + what + " " + std::to_string(id));
 }
@@ -91,12 +101,14 @@ void World::apply_in_place(const Move& m) {
     if (!c.before) continue;
     auto it = lower(doors_, c.id);
     if (it == doors_.end() || it->id != c.id) misfit("door to change is missing:", c.id);
+    if (!same_door(*it, *c.before)) misfit("door differs from the move's 'before' state:", c.id);
     doors_.erase(it);
   }
   for (const auto& c : m.units) {
     if (!c.before) continue;
     auto it = lower(units_, c.id);
     if (it == units_.end() || it->id != c.id) misfit("unit to change is missing:", c.id);
+    if (!same_unit(*it, *c.before)) misfit("unit differs from the move's 'before' state:", c.id);
     units_.erase(it);
   }
   for (const auto& c : m.units) {

@@ -263,4 +263,13 @@ TEST_CASE("bad inputs are reported, not crashed on", "[indoor][score]") {
   const double ll = sw.log_likelihood();
   CHECK_THROWS_WITH(sw.apply(rm), Catch::Contains("missing"));
   CHECK(sw.log_likelihood() == ll);
+  // A stale 'before' state is refused too (it would corrupt the coverage counts).
+  u.rect = OrientedRect{2, 2, 2, 2, 0.0};
+  sw.apply(Move{KernelKind::Add, {{3, std::nullopt, u}}, {}, {}});
+  const double ll2 = sw.log_likelihood();
+  Unit stale = u;
+  stale.rect.w = 3;
+  CHECK_THROWS_WITH(sw.apply(Move{KernelKind::Remove, {{3, stale, std::nullopt}}, {}, {}}),
+                    Catch::Contains("differs from the move's 'before'"));
+  CHECK(sw.log_likelihood() == ll2);
 }
