@@ -238,6 +238,11 @@ TEST_CASE("dominant orientation biases ADD without forbidding other orientations
   const double lb = biased.log_q(KernelKind::Add, w, add_rotated);
   CHECK(std::isfinite(lb));
   CHECK(lb < lp);
+  // The bias is periodic in 90 degrees and keeps at least `floor`.
+  CHECK(p.orientation.factor(0.5 * kPi) == Approx(1.0));
+  CHECK(p.orientation.factor(-kPi) == Approx(1.0));
+  CHECK(p.orientation.factor(0.25 * kPi) >= p.orientation.floor);
+  CHECK(p.orientation.factor(0.25 * kPi) < 0.5);
   Move add_room = add_rotated;
   add_room.units[0].after = fx.unit(1, fx.rooms[0]);
   CHECK(biased.log_q(KernelKind::Add, w, add_room) > plain.log_q(KernelKind::Add, w, add_room));

@@ -77,3 +77,31 @@ TEST_CASE("a wall shift visits only the cells it changes", "[indoor][raster]") {
   CHECK(visited == 4u * 118u + 3u * 2u);
   CHECK(sw.log_likelihood() == Approx(sw.recompute_log_likelihood()).epsilon(1e-12));
 }
+
+TEST_CASE("rendered prediction follows the cell classes", "[indoor][raster]") {
+  ScoreParams p;
+  p.raster.wall_thickness = 1.0;
+  ScoredWorld sw(ClassGrid(30, 40, std::uint8_t{0}), p);
+  Unit a;
+  a.id = 1;
+  a.rect = OrientedRect{20, 15, 20, 10, 0.0};  // cells 10..29 x 10..19
+  Door d;
+  d.id = 1;
+  Unit b = a;
+  b.id = 2;
+  b.rect = OrientedRect{20, 25, 20, 10, 0.0};  // cells 10..29 x 20..29
+  d.unit_a = 1;
+  d.unit_b = 2;
+  d.a = {18, 20};
+  d.b = {22, 20};
+  sw.apply(Move{KernelKind::Add, {{1, std::nullopt, a}, {2, std::nullopt, b}}, {{1, std::nullopt, d}}, {}});
+  const cv::Mat1b img = render_predicted(sw.coverage());
+  CHECK(img(5, 5) == static_cast<std::uint8_t>(Predicted::Unknown));
+  CHECK(img(15, 20) == static_cast<std::uint8_t>(Predicted::Free));
+  CHECK(img(15, 10) == static_cast<std::uint8_t>(Predicted::Wall));
+  CHECK(img(19, 14) == static_cast<std::uint8_t>(Predicted::Wall));  // a's bottom wall, off the door
+  CHECK(img(19, 20) == static_cast<std::uint8_t>(Predicted::Free));  // doorway through both walls
+  CHECK(img(20, 20) == static_cast<std::uint8_t>(Predicted::Free));
+  for (int r = 0; r < img.rows; ++r)
+    for (int c = 0; c < img.cols; ++c) REQUIRE(img(r, c) == static_cast<std::uint8_t>(sw.coverage().predicted(r, c)));
+}
