@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 
 #include "stdlib/indoor/dev_sampler.h"
@@ -100,4 +101,54 @@ TEST_CASE("MH over the nine kernels explains a synthetic plan (K > 0.9)", "[indo
   mh2.run(6000);
   CHECK(sw2.log_posterior() == sw.log_posterior());
   REQUIRE(sw2.world().units().size() == sw.world().units().size());
+}
+
+TEST_CASE("along an MH run every kernel's sampling path matches its own log_q", "[indoor][driver]") {
+  Plan plan;
+  MapEvidence ev(plan.map, 1);
+  const auto cands = unit_candidates(ev);
+  const std::vector<CandidateLine> lines{{{60, 8}, {60, 52}, 0}, {{100, 8}, {100, 52}, 0},
+                                         {{8, 50}, {152, 50}, 0}, {{40, 40}, {40, 90}, 2}};
+  const std::vector<CandidateDoor> doors{{{33, 50}, {37, 50}, 0.9}, {{78, 50}, {82, 50}, 0.9},
+                                         {{60, 28}, {60, 32}, 0.9}};
+  KernelSources src;
+  src.units = [&](const World&) { return std::span<const CandidateUnit>(cands); };
+  src.split_lines = [&](const World&, const Unit&) { return lines; };
+  src.doors = [&](const World&) { return std::span<const CandidateDoor>(doors); };
+  KernelParams kp;
+  kp.min_size = 4.0;
+  kp.orientation.enabled = true;
+  KernelSet ks(ev, src, kp);
+  ScoreParams sp;
+  ScoredWorld sw(plan.map, sp);
+  DevSampler mh(sw, ks, schedule_table_3_2(), 5);
+  Rng rng(77);
+  std::array<int, kKernelKinds> checked{};
+  for (int round = 0; round < 60; ++round) {
+    mh.run(100);
+    const World w = sw.world();
+    for (int k = 0; k < kKernelKinds; ++k) {
+      const auto kind = static_cast<KernelKind>(k);
+      for (int t = 0; t < 5; ++t) {
+        const auto p = ks.propose(kind, w, rng);
+        if (!p) continue;
+        ++checked[static_cast<std::size_t>(k)];
+        INFO(kernel_name(kind) << " at iteration " << (round + 1) * 100);
+        REQUIRE(std::isfinite(p->log_q_fwd));
+        REQUIRE(ks.log_q(kind, w, p->move) == Approx(p->log_q_fwd).epsilon(1e-12));
+        // The inverse move brings the proposed world back, and the scored state agrees.
+        const World next = w.applied(p->move);
+        const World back = next.applied(p->move.inverse());
+        REQUIRE(back.units().size() == w.units().size());
+        const double before = sw.log_posterior();
+        sw.apply(p->move);
+        sw.revert(p->move);
+        REQUIRE(sw.log_posterior() == before);
+      }
+    }
+  }
+  for (int k = 0; k < kKernelKinds; ++k) {
+    INFO(kernel_name(static_cast<KernelKind>(k)));
+    CHECK(checked[static_cast<std::size_t>(k)] > 0);
+  }
 }
