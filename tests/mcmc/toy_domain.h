@@ -1,6 +1,7 @@
 // A toy domain for CLI tests: input is a JSON file {"n": 20, "start": 3}; flags
-// --start-override INT and --interrupt-at INT (raises SIGINT after that many proposals,
-// to test Ctrl-C handling).
+// --start-override INT, --interrupt-at INT (raises SIGINT after that many proposals, to
+// test Ctrl-C handling) and --ready-file PATH (created at the first proposal, so a test
+// driving the binary knows the run, and its Ctrl-C handler, has started).
 #pragma once
 
 #include <atomic>
@@ -32,6 +33,23 @@ class InterruptingKernel : public rm::NamedKernel<ToyModel> {
   ResampleKernel inner_;
 };
 
+// Creates a file at its first proposal, then behaves like RESAMPLE.
+class ReadyKernel : public rm::NamedKernel<ToyModel> {
+ public:
+  explicit ReadyKernel(std::string path) : NamedKernel("RESAMPLE", "RESAMPLE"), path_(std::move(path)) {}
+
+ protected:
+  rm::Proposal propose_typed(ToyModel& m, rm::Rng& rng) const override {
+    if (!fired_.exchange(true)) std::ofstream(path_) << "running\n";
+    return inner_.propose(m, rng);
+  }
+
+ private:
+  std::string path_;
+  mutable std::atomic<bool> fired_{false};
+  ResampleKernel inner_;
+};
+
 inline cli::DomainSpec toy_domain_spec() {
   cli::DomainSpec spec;
   spec.name = "toy";
@@ -41,7 +59,8 @@ inline cli::DomainSpec toy_domain_spec() {
   spec.default_iterations = 5000;
   spec.flags = {{"start-override", "initial x (overrides the input)", "", cli::DomainFlag::Kind::integer},
                 {"interrupt-at", "raise SIGINT after this many proposals (tests)", "-1",
-                 cli::DomainFlag::Kind::integer}};
+                 cli::DomainFlag::Kind::integer},
+                {"ready-file", "file created when sampling starts (tests)", "", cli::DomainFlag::Kind::path}};
   spec.load = [](const cli::DomainInput& in) {
     const auto& path = in.inputs.at(0);
     std::ifstream f(path);
@@ -62,6 +81,7 @@ inline cli::DomainSpec toy_domain_spec() {
     s.model_factory = toy_factory(start, n);
     auto all = toy_kernels();
     if (interrupt_at >= 0) all[2] = std::make_shared<InterruptingKernel>(interrupt_at);
+    if (in.flags.has("ready-file")) all[2] = std::make_shared<ReadyKernel>(in.flags.text("ready-file"));
     s.kernels = all;
     s.schedule = rm::Schedule(rm::kernel_infos(all),
                               {{0, 500, {{"RESAMPLE", 1.0}}},
