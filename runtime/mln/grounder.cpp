@@ -30,11 +30,16 @@ class Grounder {
   Grounder(const Program& p, const Domain& d, const Evidence& e, Grounding& g)
       : program_(p), domain_(d), evidence_(e), g_(g) {}
 
-  void run() {
+  // Query index, exactly-one blocks and free atoms: everything but the clauses.
+  void prepare() {
     program_.validate();
     index_query_atoms();
     fold_blocks();
     assign_atoms();
+  }
+
+  void run() {
+    prepare();
     for (std::size_t c = 0; c < program_.clauses.size(); ++c) ground_clause(static_cast<std::int32_t>(c));
   }
 
@@ -303,6 +308,14 @@ Grounding ground(const Program& program, const Domain& domain, const Evidence& e
   g.program = &program;
   g.domain = &domain;
   Grounder(program, domain, evidence, g).run();
+  return g;
+}
+
+Grounding prepare_grounding(const Program& program, const Domain& domain, const Evidence& evidence) {
+  Grounding g;
+  g.program = &program;
+  g.domain = &domain;
+  Grounder(program, domain, evidence, g).prepare();
   return g;
 }
 

@@ -55,4 +55,9 @@ struct Grounding {
 // exactly-one group. `program` and `domain` must outlive the result.
 Grounding ground(const Program& program, const Domain& domain, const Evidence& evidence);
 
+// The part of ground() that does not depend on the clauses: query index, exactly-one
+// blocks (folded against the evidence) and free atoms. Generated grounding code
+// (compiler/emit) starts here and adds the clauses itself through FactorContext.
+Grounding prepare_grounding(const Program& program, const Domain& domain, const Evidence& evidence);
+
 }  // namespace ksmc::runtime::mln

@@ -67,7 +67,8 @@ void Program::validate() const {
       const auto& p = predicates[l.predicate];
       if (l.args.size() != p.arg_types.size())
         throw MlnError(c.describe() + ": '" + p.name + "' takes " + std::to_string(p.arg_types.size()) +
-                       " arguments, got " + std::to_string(l.args.size()));
+                       (p.arg_types.size() == 1 ? " argument" : " arguments") + ", got " +
+                       std::to_string(l.args.size()));
       for (std::size_t i = 0; i < l.args.size(); ++i) {
         const auto& t = l.args[i];
         if (!t.is_variable) continue;

@@ -1,6 +1,8 @@
 // Grounder (folding, indexing, blocks, existentials) and the .db reader's errors.
 #include <catch2/catch.hpp>
 
+#include <random>
+
 #include "runtime/mln/error.h"
 #include "runtime/mln/exact.h"
 #include "runtime/mln/grounder.h"
@@ -204,4 +206,43 @@ TEST_CASE("grounding is deterministic", "[mln][grounder]") {
   }
   CHECK(a.network.constant() == b.network.constant());
   CHECK(a.index.atom == b.index.atom);
+}
+
+TEST_CASE(".db parser: random garbage gives file:line errors, never a crash", "[mln][db]") {
+  TabletopKb kb;
+  const auto d = objects(kb, {"Table", "A", "B"});
+  std::mt19937_64 rng(123);
+  const std::string alphabet = "stable(contact,)! AB/\t\r\nTablehover(x)),,((!!//";
+  int ok = 0, errors = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::string text;
+    const int len = static_cast<int>(rng() % 40);
+    for (int i = 0; i < len; ++i) text += alphabet[rng() % alphabet.size()];
+    Evidence ev(kb.program, d);
+    try {
+      parse_db(text, "fuzz.db", kb.program, d, ev);
+      ++ok;
+    } catch (const MlnError& e) {
+      ++errors;
+      INFO(text);
+      CHECK(std::string(e.what()).rfind("fuzz.db:", 0) == 0);
+    }
+  }
+  CHECK(errors > 100);
+  CHECK(ok > 10);
+}
+
+TEST_CASE("program validation names the rule", "[mln][program]") {
+  TabletopKb kb;
+  Clause c;
+  c.name = "bad";
+  c.text = "stable(o1, o2)";
+  c.loc = {"kb.ksm", 40};
+  c.variables = {{"o1", kb.object, false}, {"o2", kb.object, false}};
+  c.literals = {{kb.stable, false, {Term::var(0), Term::var(1)}}};
+  c.weight = 1.0;
+  kb.program.add_clause(c);
+  CHECK_THROWS_WITH(kb.program.validate(), "bad `stable(o1, o2)` (kb.ksm:40): 'stable' takes 1 argument, got 2");
+  CHECK_THROWS_WITH(kb.program.add_type("object"), "program: duplicate type 'object'");
+  CHECK_THROWS_WITH(kb.program.add_predicate({"hover", {0}, false, false, -1}), "program: duplicate predicate 'hover'");
 }
