@@ -79,14 +79,30 @@ class Reader {
 
   Pose pose(const json& j, const std::string& path, double tol) const {
     Pose p;
-    p.t = vec<3>(member(j, path, "t"), join(path, "t"));
+    p.t = bounded<3>(member(j, path, "t"), join(path, "t"));
     const std::string qpath = join(path, "q");
     const Eigen::Vector4d q = vec<4>(member(j, path, "q"), qpath);  // w, x, y, z
-    const double n = q.norm();
-    if (n < 1e-12) fail(qpath, "zero quaternion");
-    if (std::abs(n - 1.0) > tol) warn(qpath, fmt::format("non-unit quaternion (norm {:.6g}), normalised", n));
-    p.q = Eigen::Quaterniond(q[0] / n, q[1] / n, q[2] / n, q[3] / n);
+    // Scale by the largest component first so that huge entries cannot overflow the norm.
+    const double m = q.cwiseAbs().maxCoeff();
+    if (!(m > 1e-12)) fail(qpath, "zero quaternion");
+    const Eigen::Vector4d qs = q / m;
+    const double ns = qs.norm();
+    const double n = ns * m;
+    if (!(std::abs(n - 1.0) <= tol)) warn(qpath, fmt::format("non-unit quaternion (norm {:.6g}), normalised", n));
+    p.q = Eigen::Quaterniond(qs[0] / ns, qs[1] / ns, qs[2] / ns, qs[3] / ns);
+    p.q.normalize();
     return p;
+  }
+
+  // Like vec<N>, but every entry must lie within ±limit (default 1e6): larger values
+  // are not plausible metres or pixels and would overflow later arithmetic.
+  template <int N>
+  Eigen::Matrix<double, N, 1> bounded(const json& j, const std::string& path, double limit = 1e6) const {
+    const Eigen::Matrix<double, N, 1> v = vec<N>(j, path);
+    for (int i = 0; i < N; ++i)
+      if (std::abs(v[i]) > limit)
+        fail(index(path, static_cast<std::size_t>(i)), fmt::format("value {} out of range (|v| > {})", v[i], limit));
+    return v;
   }
 
   static std::string join(const std::string& path, const char* key) {

@@ -25,6 +25,9 @@ Camera read_camera(const Reader& r, const json& j, const std::string& path) {
   c.cy = r.number(r.member(j, path, "cy"), Reader::join(path, "cy"));
   c.width = r.positive_int(r.member(j, path, "width"), Reader::join(path, "width"));
   c.height = r.positive_int(r.member(j, path, "height"), Reader::join(path, "height"));
+  const std::pair<const char*, double> checks[] = {{"fx", c.fx}, {"fy", c.fy}, {"cx", c.cx}, {"cy", c.cy}};
+  for (const auto& [key, v] : checks)
+    if (std::abs(v) > 1e7) r.fail(Reader::join(path, key), fmt::format("value {} out of range (|v| > 1e7)", v));
   return c;
 }
 
@@ -36,7 +39,7 @@ SceneObject read_object(const Reader& r, const json& j, const std::string& path,
   if (o.id == kTableId) r.fail(Reader::join(path, "id"), "id \"table\" is reserved for the table");
   o.model = r.string(r.member(j, path, "model"), Reader::join(path, "model"));
   const std::string spath = Reader::join(path, "size");
-  o.size = r.vec<3>(r.member(j, path, "size"), spath);
+  o.size = r.bounded<3>(r.member(j, path, "size"), spath);
   for (int i = 0; i < 3; ++i)
     if (!(o.size[i] > 0.0))
       r.fail(Reader::index(spath, static_cast<std::size_t>(i)), fmt::format("size must be > 0, got {}", o.size[i]));
@@ -53,8 +56,8 @@ SceneObject read_object(const Reader& r, const json& j, const std::string& path,
       r.fail(kpath, fmt::format("keypoint lists differ in length: model has {}, image has {}", model.size(),
                                 image.size()));
     for (std::size_t i = 0; i < model.size(); ++i) {
-      o.keypoints_model.push_back(r.vec<3>(model[i], Reader::index(mpath, i)));
-      o.keypoints_image.push_back(r.vec<2>(image[i], Reader::index(ipath, i)));
+      o.keypoints_model.push_back(r.bounded<3>(model[i], Reader::index(mpath, i)));
+      o.keypoints_image.push_back(r.bounded<2>(image[i], Reader::index(ipath, i), 1e7));
     }
   }
   return o;
@@ -74,7 +77,7 @@ SceneLoad parse_scene(const nlohmann::json& doc, const std::string& source_name,
   s.table_in_camera = r.pose(r.member(table, "table", "pose"), "table.pose", options.quaternion_tolerance);
   s.table.size = options.table_size;
   if (const json* ts = r.optional_member(table, "table", "size")) {
-    s.table.size = r.vec<3>(*ts, "table.size");
+    s.table.size = r.bounded<3>(*ts, "table.size");
     for (int i = 0; i < 3; ++i)
       if (!(s.table.size[i] > 0.0))
         r.fail(Reader::index("table.size", static_cast<std::size_t>(i)), "size must be > 0");

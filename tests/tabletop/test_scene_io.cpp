@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include <fstream>
+#include <random>
 
 #include <nlohmann/json.hpp>
 
@@ -154,4 +155,67 @@ TEST_CASE("load_scene reports unreadable and malformed files by name", "[scene]"
   }
   const SceneLoad load = load_scene(dir / "ok.json");
   CHECK(load.scene.image == dir / "bg.png");
+}
+
+TEST_CASE("mutated documents give a SceneError or a valid scene, never anything else", "[scene][property]") {
+  std::mt19937_64 rng(99);
+  const std::vector<json> junk = {json(nullptr), json("x"), json(-1), json(0), json(1e308), json::array(),
+                                  json::object(), json::array({1, 2}), json(true), json(2.5)};
+  // Every path to a value in the valid document.
+  std::vector<json::json_pointer> paths;
+  const json flat = valid_doc().flatten();
+  for (auto it = flat.begin(); it != flat.end(); ++it) {
+    json::json_pointer p(it.key());
+    while (!p.empty()) {
+      paths.push_back(p);
+      p = p.parent_pointer();
+    }
+  }
+  int errors = 0, ok = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    json d = valid_doc();
+    const int edits = 1 + static_cast<int>(rng() % 3);
+    for (int e = 0; e < edits; ++e) {
+      const auto& p = paths[rng() % paths.size()];
+      if (!d.contains(p)) continue;
+      if (rng() % 4 == 0) {
+        json& parent = d[p.parent_pointer()];
+        if (parent.is_object()) parent.erase(p.back());
+      } else {
+        d[p] = junk[rng() % junk.size()];
+      }
+    }
+    try {
+      const SceneLoad load = parse_scene(d, "scene.json", "/data");
+      for (const auto& o : load.scene.objects) {
+        REQUIRE(o.size.minCoeff() > 0.0);
+        REQUIRE(std::abs(o.pose.q.norm() - 1.0) < 1e-9);
+        REQUIRE(o.keypoints_model.size() == o.keypoints_image.size());
+      }
+      ++ok;
+    } catch (const SceneError& e) {
+      REQUIRE(std::string(e.what()).rfind("scene.json: ", 0) == 0);
+      ++errors;
+    }
+  }
+  CHECK(errors > 1000);
+  CHECK(ok > 10);
+}
+
+TEST_CASE("huge values are rejected or normalised without overflow", "[scene]") {
+  json d = valid_doc();
+  d["objects"][0]["pose"]["q"] = {0.0, 1e308, 1e308, 0.0};
+  const SceneLoad load = parse_scene(d, "scene.json", "/data");
+  CHECK(load.scene.objects[0].pose.q.norm() == Approx(1.0));
+  const Eigen::Quaterniond qc = load.scene.camera_pose(load.scene.objects[0]).q;
+  CHECK(std::abs(qc.x()) == Approx(std::sqrt(0.5)));
+  CHECK(std::abs(qc.y()) == Approx(std::sqrt(0.5)));
+  REQUIRE(load.warnings.size() == 1);
+  CHECK(load.warnings[0] == "scene.json: objects[0].pose.q: non-unit quaternion (norm 1.41421e+308), normalised");
+  d = valid_doc();
+  d["objects"][1]["pose"]["t"][2] = 1e300;
+  CHECK(error_of(d) == "scene.json: objects[1].pose.t[2]: value 1e+300 out of range (|v| > 1000000)");
+  d = valid_doc();
+  d["camera"]["cx"] = -1e300;
+  CHECK(error_of(d) == "scene.json: camera.cx: value -1e+300 out of range (|v| > 1e7)");
 }
