@@ -248,13 +248,14 @@ class Grounder {
       } else {
         g_.network.add_clause(out, c.weight, ci);
       }
-      std::size_t j = 0;
-      for (; j < universal.size(); ++j) {
-        const auto v = universal[j];
+      // Row-major order (last variable fastest), like nested loops in generated code.
+      std::size_t j = universal.size();
+      for (; j > 0; --j) {
+        const auto v = universal[j - 1];
         if (++value[v] < size_of(v)) break;
         value[v] = 0;
       }
-      if (j == universal.size()) break;
+      if (j == 0) break;
     }
   }
 
