@@ -66,3 +66,42 @@ TEST_CASE("HOPE frame: single-level scene evidence with default tolerances", "[h
   std::cout << "HOPE frame: closest object pair " << closest * 1000.0 << " mm (exact distance)\n";
   CHECK(closest > 0.004);
 }
+
+TEST_CASE("HOPE importer: malformed metadata names the file and place", "[hope]") {
+  auto error_of = [](const nlohmann::json& doc) -> std::string {
+    try {
+      (void)import_hope(doc, "meta_data.json");
+    } catch (const SceneError& e) {
+      return e.what();
+    }
+    return "(no error)";
+  };
+  const auto eye = nlohmann::json::parse("[[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]");
+  nlohmann::json doc = {
+      {"camera", {{"intrinsics", nlohmann::json::parse("[[600,0,320],[0,600,240],[0,0,1]]")},
+                  {"extrinsics", eye}, {"width", 640}, {"height", 480}}},
+      {"objects", nlohmann::json::array({{{"class", "Milk"},
+                                          {"pose", nlohmann::json::parse("[[1,0,0,0],[0,1,0,0],[0,0,1,50],[0,0,0,1]]")},
+                                          {"bbox3d", {-3, -9, -3, 3, 9, 3}}}})}};
+  const HopeImport ok = import_hope(doc, "meta_data.json");
+  REQUIRE(ok.scene.objects.size() == 1);
+  CHECK(ok.scene.objects[0].size.isApprox(Eigen::Vector3d(0.06, 0.18, 0.06)));
+  CHECK(ok.scene.objects[0].obb().min_z() == Approx(0.0).margin(1e-12));  // table at the lowest point
+
+  nlohmann::json d = doc;
+  d.erase("camera");
+  CHECK(error_of(d) == "meta_data.json: camera: missing field");
+  d = doc;
+  d["objects"][0]["bbox3d"] = {1, 2, 3};
+  CHECK(error_of(d) == "meta_data.json: objects[0].bbox3d: expected 6 numbers, got 3");
+  d = doc;
+  d["objects"][0]["pose"][0][0] = 2.0;
+  CHECK(error_of(d) == "meta_data.json: objects[0].pose: rotation part is not a proper rotation");
+  d = doc;
+  d["objects"][0]["bbox3d"][3] = -5;
+  CHECK(error_of(d) == "meta_data.json: objects[0].bbox3d: max must exceed min on axis 0");
+  d = doc;
+  d["objects"] = nlohmann::json::array();
+  CHECK(error_of(d) == "meta_data.json: objects: empty scene: no objects");
+  CHECK_THROWS_WITH(import_hope_file("/nonexistent/meta.json"), Catch::Contains("/nonexistent/meta.json: cannot open file"));
+}
