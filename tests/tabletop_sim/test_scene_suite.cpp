@@ -219,7 +219,7 @@ TEST_CASE("The suite mixes clean, hidden and false scenes", "[tabletop_sim][suit
   CHECK(with_false >= 10);
   CHECK(clean >= 8);
   CHECK(stacked >= 30);
-  CHECK(with_contact >= 3);
+  CHECK(with_contact >= 10);
   CHECK(kinds.size() == 5);  // none + the four kinds of false estimate
 }
 

@@ -12,7 +12,7 @@ namespace ksmc::stdlib::tabletop::sim {
 
 struct LayoutParams {
   std::array<double, 3> stack_height_odds{0.45, 0.35, 0.20};  // columns of 1, 2, 3 boxes
-  double lean_rate = 0.2;       // chance that a single box is dropped leaning on a column
+  double lean_rate = 0.4;       // chance that a single box is dropped leaning on a column
   double clearance = 0.012;     // m between the footprints of neighbouring columns
   int placement_tries = 120;    // random positions tried per column before giving up
 };
