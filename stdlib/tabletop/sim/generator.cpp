@@ -67,7 +67,6 @@ void corrupt(std::uint64_t seed, int attempt, const GeneratorOptions& o, Draft& 
   for (const auto& p : d.physical) boxes.push_back(p.body.box);
   const auto removed = choose_undetected(rng, boxes, d.relations, o.corruption);
   const auto hidden = hidden_boxes(boxes.size(), d.relations, removed);
-  std::vector<int> by_physical(boxes.size(), -1);
   for (std::size_t i = 0; i < boxes.size(); ++i) {
     d.physical[i].undetected = removed[i];
     if (removed[i]) continue;
@@ -77,7 +76,6 @@ void corrupt(std::uint64_t seed, int attempt, const GeneratorOptions& o, Draft& 
     s.hidden = hidden[i];
     s.stable = d.relations.stable[i];
     s.clean_pose = boxes[i].pose;
-    by_physical[i] = static_cast<int>(d.objects.size());
     d.objects.push_back(s);
   }
 
