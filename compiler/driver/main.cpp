@@ -1,6 +1,8 @@
 // ksmc — the command line. Each subcommand is one entry of kCommands; a later stage adds
 // `emit`, `infer`, `build` and `--dump-ir` by adding entries here.
+#include <algorithm>
 #include <exception>
+#include <filesystem>
 #include <functional>
 #include <iostream>
 #include <string>
@@ -9,7 +11,11 @@
 #include "compiler/ast/dump.h"
 #include "compiler/build/loader.h"
 #include "compiler/driver/pipeline.h"
+#include "compiler/emit/emit_factors.h"
 #include "compiler/fmt/formatter.h"
+#include "compiler/infer/infer_command.h"
+#include "compiler/lower/dump_ir.h"
+#include "compiler/lower/lower_mln.h"
 #include "runtime/io/atomic_file.h"
 
 #ifndef KSMC_VERSION
@@ -26,6 +32,9 @@ struct Invocation {
   bool dump_ast = false;
   bool in_place = false;
   bool check_only = false;  // fmt --check
+  bool dump_ir = false;
+  std::string out_dir;      // emit --out
+  infer::InferRequest infer;
 };
 
 struct Command {
@@ -121,11 +130,70 @@ int cmd_dump_ast(Invocation& inv) {
   return status;
 }
 
+// Load, check and lower one file; diagnostics go to stderr.
+bool lower_file(const std::string& path, Invocation& inv, lower::MlnIr& ir) {
+  diag::SourceManager sources;
+  diag::DiagEngine diags(sources);
+  driver::FrontendResult r = driver::run_frontend(path, inv.load, sources, diags);
+  bool ok = r.ok && lower::lower_mln(r.program, r.symbols, sources, diags, ir);
+  ok = ok && !diags.has_errors();
+  diags.flush(std::cerr);
+  return ok;
+}
+
+int cmd_dump_ir(Invocation& inv) {
+  int status = kExitOk;
+  for (const std::string& path : inv.files) {
+    lower::MlnIr ir;
+    if (!lower_file(path, inv, ir)) {
+      status = kExitErrors;
+      continue;
+    }
+    lower::dump_ir(ir, std::cout);
+  }
+  return status;
+}
+
+int cmd_emit(Invocation& inv) {
+  if (inv.files.size() != 1 || inv.out_dir.empty()) {
+    std::cerr << "ksmc emit: give one FILE and --out DIR\n";
+    return kExitUsage;
+  }
+  lower::MlnIr ir;
+  if (!lower_file(inv.files.front(), inv, ir)) return kExitErrors;
+  if (inv.dump_ir) lower::dump_ir(ir, std::cout);
+  const emit::FactorsOutput out = emit::emit_factors(ir);
+  std::error_code ec;
+  std::filesystem::create_directories(inv.out_dir, ec);
+  if (ec) {
+    std::cerr << "ksmc emit: cannot create '" << inv.out_dir << "': " << ec.message() << "\n";
+    return kExitErrors;
+  }
+  for (const emit::GeneratedFile* f : {&out.header, &out.source}) {
+    ksmc::runtime::io::write_file_atomic(std::filesystem::path(inv.out_dir) / f->name, f->text);
+  }
+  return kExitOk;
+}
+
+int cmd_infer(Invocation& inv) {
+  if (inv.files.size() != 1 || inv.infer.evidence_path.empty()) {
+    std::cerr << "ksmc infer: give one FILE and --evidence E.db\n";
+    return kExitUsage;
+  }
+  lower::MlnIr ir;
+  if (!lower_file(inv.files.front(), inv, ir)) return kExitErrors;
+  return infer::run_infer(ir, inv.infer, std::cout, std::cerr);
+}
+
 const std::vector<Command>& commands() {
   static const std::vector<Command> kCommands{
       {"check", "ksmc check [--dump-ast] [-I DIR] FILE...",
        "check domain files; prints one summary line per file", cmd_check},
       {"fmt", "ksmc fmt [--in-place | --check] FILE...", "print FILE in canonical layout (comments kept)", cmd_fmt},
+      {"emit", "ksmc emit [--dump-ir] FILE --out DIR",
+       "write the generated C++ of FILE's knowledge base: DIR/<domain>_factors.{h,cpp}", cmd_emit},
+      {"infer", "ksmc infer FILE --evidence E.db [--query p,q] [--method exact|gibbs|mcsat|map|auto] [--seed N]",
+       "Markov logic inference without compiling: prints `pred(args) probability`, sorted", cmd_infer},
   };
   return kCommands;
 }
@@ -135,12 +203,21 @@ void print_help(std::ostream& out) {
       << "usage:\n";
   for (const Command& c : commands()) out << "  " << c.usage << "\n      " << c.summary << "\n";
   out << "  ksmc --dump-ast FILE\n      print the syntax tree of FILE (no checks)\n"
+      << "  ksmc --dump-ir FILE\n      print the lowered clause program of FILE (after checking)\n"
       << "  ksmc --list-passes\n      list the front-end passes in order\n\n"
       << "options:\n"
       << "  -I DIR        also search DIR for included files\n"
       << "  --dump-ast    print the syntax tree (with check: after checking)\n"
       << "  --in-place    fmt: rewrite the files instead of printing\n"
       << "  --check       fmt: exit 1 and name the files that are not formatted\n"
+      << "  --dump-ir     print the lowered clause program\n"
+      << "  --out DIR     emit: the output folder\n"
+      << "  --evidence E  infer: the .db evidence file (ground atoms; `type = {A, B}` declares constants)\n"
+      << "  --query LIST  infer: comma-separated query predicates to print (default: all)\n"
+      << "  --method M    infer: exact, gibbs, mcsat, map or auto (default auto)\n"
+      << "  --seed N      infer: random seed of the sampling engines (default 1)\n"
+      << "  --samples N   infer: samples of gibbs / mcsat\n"
+      << "  --burn-in N   infer: burn-in of gibbs / mcsat\n"
       << "  --help        this text\n"
       << "  --version     print the version\n\n"
       << "exit status: 0 ok, 1 errors in the input, 2 bad usage, 3 internal compiler error\n";
@@ -161,8 +238,40 @@ int run(int argc, char** argv) {
       std::cout << "ksmc " << KSMC_VERSION << "\n";
       return kExitOk;
     }
+    // Options that take a value.
+    static const std::vector<std::string> kValued{"--out", "-o", "--evidence", "--query", "--method",
+                                                  "--seed", "--samples", "--burn-in"};
+    if (std::find(kValued.begin(), kValued.end(), a) != kValued.end()) {
+      if (i + 1 >= args.size()) {
+        std::cerr << "ksmc: " << a << " needs a value\n";
+        return kExitUsage;
+      }
+      const std::string& v = args[++i];
+      try {
+        if (a == "--out" || a == "-o") inv.out_dir = v;
+        else if (a == "--evidence") inv.infer.evidence_path = v;
+        else if (a == "--method") inv.infer.method = v;
+        else if (a == "--seed") inv.infer.seed = std::stoull(v);
+        else if (a == "--samples") inv.infer.samples = std::stoll(v);
+        else if (a == "--burn-in") inv.infer.burn_in = std::stoll(v);
+        else {  // --query
+          std::size_t start = 0;
+          while (start <= v.size()) {
+            const std::size_t comma = std::min(v.find(',', start), v.size());
+            if (comma > start) inv.infer.queries.push_back(v.substr(start, comma - start));
+            start = comma + 1;
+          }
+        }
+      } catch (const std::exception&) {
+        std::cerr << "ksmc: " << a << ": '" << v << "' is not a number\n";
+        return kExitUsage;
+      }
+      continue;
+    }
     if (a == "--dump-ast") {
       inv.dump_ast = true;
+    } else if (a == "--dump-ir") {
+      inv.dump_ir = true;
     } else if (a == "--in-place") {
       inv.in_place = true;
     } else if (a == "--check") {
@@ -180,7 +289,7 @@ int run(int argc, char** argv) {
     } else if (a.size() > 1 && a[0] == '-') {
       std::cerr << "ksmc: unknown option '" << a << "' (see ksmc --help)\n";
       return kExitUsage;
-    } else if (command == nullptr && inv.files.empty() && !inv.dump_ast) {
+    } else if (command == nullptr && inv.files.empty() && !inv.dump_ast && !inv.dump_ir) {
       for (const Command& c : commands()) {
         if (a == c.name) command = &c;
       }
@@ -196,7 +305,7 @@ int run(int argc, char** argv) {
     for (const std::string& p : driver::pass_names()) std::cout << p << "\n";
     return kExitOk;
   }
-  if (command == nullptr && !inv.dump_ast) {
+  if (command == nullptr && !inv.dump_ast && !inv.dump_ir) {
     print_help(std::cerr);
     return kExitUsage;
   }
@@ -204,7 +313,7 @@ int run(int argc, char** argv) {
     std::cerr << "ksmc: no input files (see ksmc --help)\n";
     return kExitUsage;
   }
-  if (command == nullptr) return cmd_dump_ast(inv);
+  if (command == nullptr) return inv.dump_ir ? cmd_dump_ir(inv) : cmd_dump_ast(inv);
   return command->run(inv);
 }
 
