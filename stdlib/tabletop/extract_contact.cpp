@@ -13,7 +13,7 @@ bool is_near_vertical(const Eigen::Vector3d& direction, const EvidenceParams& pa
 bool contact_from_geometry(const PairGeometry& g, const EvidenceParams& params) {
   if (intersect_from_geometry(g, params)) return false;
   if (g.overlapping) return true;  // shallow overlap within tolerance: touching
-  const double eps = is_near_vertical(g.direction, params) ? params.vertical_contact_eps
+  const double eps = g.stacked && is_near_vertical(g.direction, params) ? params.vertical_contact_eps
                                                            : params.contact_eps;
   return g.distance <= eps;
 }

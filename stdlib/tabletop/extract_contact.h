@@ -1,7 +1,8 @@
 // contact(a, b): the boxes touch without intersecting — the EXACT distance between
 // the solids (closest points, obb_distance.h) is at most the contact tolerance, or
 // they overlap by no more than the intersect tolerance. Mutually exclusive with
-// intersect(a, b) by construction.
+// intersect(a, b) by construction. The larger vertical contact tolerance applies
+// only to near-vertical gaps between stacked boxes (PairGeometry::stacked).
 #pragma once
 
 #include "stdlib/tabletop/evidence_params.h"

@@ -7,7 +7,8 @@ namespace ksmc::stdlib::tabletop {
 bool intersect_from_geometry(const PairGeometry& g, const EvidenceParams& params) {
   if (!g.overlapping) return false;
   if (g.contained) return true;
-  const double eps = is_near_vertical(g.direction, params) ? params.vertical_intersect_eps
+  // The vertical tolerance absorbs height noise between stacked bodies only.
+  const double eps = g.stacked && is_near_vertical(g.direction, params) ? params.vertical_intersect_eps
                                                            : params.intersect_eps;
   return g.depth > eps;
 }

@@ -1,5 +1,7 @@
 // intersect(a, b): the boxes penetrate deeper than the intersect tolerance (SAT
-// penetration depth over 15 axes, obb_sat.h), or one box contains the other.
+// penetration depth over 15 axes, obb_sat.h), or one box contains the other. The
+// larger vertical tolerance applies only when the minimum-overlap axis is
+// near-vertical AND the boxes are stacked (PairGeometry::stacked).
 #pragma once
 
 #include "stdlib/tabletop/evidence_params.h"

@@ -17,6 +17,8 @@ bool all_vertices_inside(const Obb& inner, const Obb& outer) {
 
 PairGeometry pair_geometry(const Obb& a, const Obb& b, double exact_below) {
   PairGeometry g;
+  const double a_lo = a.min_z(), a_hi = a.max_z(), b_lo = b.min_z(), b_hi = b.max_z();
+  g.stacked = (a_lo > b_lo && a_hi > b_hi) || (b_lo > a_lo && b_hi > a_hi);
   const SatResult sat = obb_sat(a, b);
   if (sat.overlapping) {
     g.overlapping = true;

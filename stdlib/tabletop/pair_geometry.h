@@ -17,6 +17,10 @@ struct PairGeometry {
   double depth = 0.0;              // SAT penetration depth (0 if separated)
   bool overlapping = false;
   bool contained = false;          // one box entirely inside the other
+  // The boxes' z-intervals [min_z, max_z] are offset like a stack: one starts and ends
+  // strictly above the other. A thin box pushed sideways into another at mid-height is
+  // not stacked (its z-interval lies inside the other's).
+  bool stacked = false;
   Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  // gap direction (a→b) or SAT axis
 };
 

@@ -243,3 +243,26 @@ TEST_CASE("pair geometry skips the exact distance only beyond the contact tolera
   CHECK(gn.distance == Approx(obb_closest_points(a, near).distance));
   CHECK(pair_geometry(a, far).distance_exact);  // no cut-off: always exact
 }
+
+TEST_CASE("vertical tolerances apply to stacking only, not to a thin box pushed in sideways", "[geometry]") {
+  const Obb big = box(Vector3d(0, 0, 0.1), Vector3d(0.2, 0.2, 0.2));
+  // 1 cm thin plate driven 5 cm into big's side just below its top face (plate z from
+  // 0.189 to 0.199): the minimum-overlap axis is vertical (11 mm to push it out upwards,
+  // below the 15 mm vertical tolerance) but this is no stack.
+  const Obb plate = box(Vector3d(0.1 + 0.1 - 0.05, 0, 0.194), Vector3d(0.2, 0.1, 0.01));
+  const PairGeometry g = pair_geometry(plate, big);
+  CHECK(g.overlapping);
+  CHECK(std::abs(g.direction.z()) == Approx(1.0));
+  CHECK(g.depth == Approx(0.011));
+  CHECK_FALSE(g.stacked);
+  CHECK(extract_intersect(plate, big, kParams));
+  CHECK_FALSE(extract_contact(plate, big, kParams));
+  // The same plate 1 cm above a low box's top surface: stacked, within the vertical tolerance.
+  const Obb low = box(Vector3d(0, 0, 0.02), Vector3d(0.2, 0.2, 0.04));
+  const Obb above = box(Vector3d(0, 0, 0.04 + 0.01 + 0.005), Vector3d(0.2, 0.1, 0.01));
+  CHECK(pair_geometry(above, low).stacked);
+  CHECK(extract_contact(above, low, kParams));
+  // A 1 cm lateral gap between side-by-side boxes is never contact (lateral tolerance 4 mm).
+  const Obb side = box(Vector3d(0.2 + 0.01, 0, 0.1), Vector3d(0.2, 0.2, 0.2));
+  CHECK_FALSE(extract_contact(side, big, kParams));
+}
