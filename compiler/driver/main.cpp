@@ -12,6 +12,7 @@
 #include "compiler/build/loader.h"
 #include "compiler/driver/pipeline.h"
 #include "compiler/emit/emit_factors.h"
+#include "compiler/emit/emit_model.h"
 #include "compiler/fmt/formatter.h"
 #include "compiler/infer/infer_command.h"
 #include "compiler/lower/dump_ir.h"
@@ -159,19 +160,38 @@ int cmd_emit(Invocation& inv) {
     std::cerr << "ksmc emit: give one FILE and --out DIR\n";
     return kExitUsage;
   }
+  const std::string& path = inv.files.front();
+  diag::SourceManager sources;
+  diag::DiagEngine diags(sources);
+  driver::FrontendResult r = driver::run_frontend(path, inv.load, sources, diags);
   lower::MlnIr ir;
-  if (!lower_file(inv.files.front(), inv, ir)) return kExitErrors;
+  const bool ok = r.ok && lower::lower_mln(r.program, r.symbols, sources, diags, ir) && !diags.has_errors();
+  diags.flush(std::cerr);
+  if (!ok) return kExitErrors;
   if (inv.dump_ir) lower::dump_ir(ir, std::cout);
-  const emit::FactorsOutput out = emit::emit_factors(ir);
+
+  std::vector<emit::GeneratedFile> files;
+  const emit::FactorsOutput factors = emit::emit_factors(ir);
+  files.push_back(factors.header);
+  files.push_back(factors.source);
+  const std::string kit = emit::kit_of(r.program, r.symbols, sources);
+  if (kit.empty()) {
+    std::cerr << path << ": note: the likelihood is not declared by a stdlib kit (stdlib/<kit>.ksm); "
+              << "only the Markov logic factors were generated\n";
+  } else {
+    const emit::ModelOutput model = emit::emit_model(r.program, r.symbols, sources, kit);
+    files.push_back(model.header);
+    files.push_back(model.source);
+    files.push_back(model.main);
+  }
   std::error_code ec;
   std::filesystem::create_directories(inv.out_dir, ec);
   if (ec) {
     std::cerr << "ksmc emit: cannot create '" << inv.out_dir << "': " << ec.message() << "\n";
     return kExitErrors;
   }
-  for (const emit::GeneratedFile* f : {&out.header, &out.source}) {
-    ksmc::runtime::io::write_file_atomic(std::filesystem::path(inv.out_dir) / f->name, f->text);
-  }
+  for (const emit::GeneratedFile& f : files)
+    ksmc::runtime::io::write_file_atomic(std::filesystem::path(inv.out_dir) / f.name, f.text);
   return kExitOk;
 }
 
@@ -191,7 +211,7 @@ const std::vector<Command>& commands() {
        "check domain files; prints one summary line per file", cmd_check},
       {"fmt", "ksmc fmt [--in-place | --check] FILE...", "print FILE in canonical layout (comments kept)", cmd_fmt},
       {"emit", "ksmc emit [--dump-ir] FILE --out DIR",
-       "write the generated C++ of FILE's knowledge base: DIR/<domain>_factors.{h,cpp}", cmd_emit},
+       "write the generated C++ of FILE: DIR/<domain>_factors.{h,cpp}, <domain>_model.{h,cpp}, <domain>_main.cpp", cmd_emit},
       {"infer", "ksmc infer FILE --evidence E.db [--query p,q] [--method exact|gibbs|mcsat|map|auto] [--seed N]",
        "Markov logic inference without compiling: prints `pred(args) probability`, sorted", cmd_infer},
   };
