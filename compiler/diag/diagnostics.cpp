@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <climits>
 #include <tuple>
+#include <vector>
 
 namespace ksmc::compiler::diag {
 
@@ -25,6 +26,28 @@ std::string caret_line(std::string_view line, int col) {
   for (; cp < col; ++cp) out += ' ';
   out += '^';
   return out;
+}
+
+// Long lines are shown as a window of kWindow code points around the column, with "..."
+// where text was cut; `col` is moved accordingly.
+constexpr std::size_t kMaxShown = 160;
+constexpr std::size_t kWindow = 120;
+
+void clip_line(std::string& line, int& col) {
+  std::vector<std::size_t> starts;  // byte offset of each code point
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    if (!is_continuation(static_cast<unsigned char>(line[i]))) starts.push_back(i);
+  }
+  const std::size_t n = starts.size();
+  if (n <= kMaxShown) return;
+  const std::size_t c = std::min(static_cast<std::size_t>(std::max(col, 1) - 1), n);
+  const std::size_t begin = c > kWindow / 2 ? std::min(c - kWindow / 2, n - kWindow) : 0;
+  const std::size_t end = begin + kWindow;
+  const std::size_t b0 = starts[begin];
+  const std::size_t b1 = end < n ? starts[end] : line.size();
+  const std::string prefix = begin > 0 ? "..." : "";
+  line = prefix + line.substr(b0, b1 - b0) + (end < n ? "..." : "");
+  col = static_cast<int>(prefix.size() + (c - begin) + 1);
 }
 
 }  // namespace
@@ -90,8 +113,10 @@ void DiagEngine::flush(std::ostream& out) {
     }
     out << sources_.path(d.loc.file) << ':' << d.loc.line << ':' << d.loc.col << ": " << sev << ": " << d.message
         << '\n';
-    const std::string line = printable_line(sources_.line(d.loc.file, d.loc.line));
-    out << line << '\n' << caret_line(line, d.loc.col) << '\n';
+    std::string line = printable_line(sources_.line(d.loc.file, d.loc.line));
+    int col = d.loc.col;
+    clip_line(line, col);
+    out << line << '\n' << caret_line(line, col) << '\n';
   }
   diags_.clear();
 }

@@ -29,13 +29,29 @@ std::unique_ptr<ParsedFile> parse_text(int file, const std::string& text, diag::
   out->tokens = std::make_unique<antlr4::CommonTokenStream>(out->lexer.get());
   out->parser = std::make_unique<ksmc_grammar::KsmParser>(out->tokens.get());
   out->parser->removeErrorListeners();
-  out->parser->setErrorHandler(std::make_shared<FriendlyErrorStrategy>(file, diags));
 
+  // Two-stage parsing: the fast SLL prediction mode with a bail-out strategy first; only
+  // when that fails (a syntax error, or a rare SLL conflict) parse again with full LL and
+  // the friendly error strategy, which then reports the errors.
+  auto* interp = out->parser->getInterpreter<antlr4::atn::ParserATNSimulator>();
+  interp->setPredictionMode(antlr4::atn::PredictionMode::SLL);
+  out->parser->setErrorHandler(std::make_shared<antlr4::BailErrorStrategy>());
   const int before = diags.errors_in(file);
   try {
     out->tree = out->parser->file();
   } catch (const antlr4::ParseCancellationException&) {
     out->tree = nullptr;
+  }
+  if (out->tree == nullptr) {
+    out->tokens->seek(0);
+    out->parser->reset();
+    interp->setPredictionMode(antlr4::atn::PredictionMode::LL);
+    out->parser->setErrorHandler(std::make_shared<FriendlyErrorStrategy>(file, diags));
+    try {
+      out->tree = out->parser->file();
+    } catch (const antlr4::ParseCancellationException&) {
+      out->tree = nullptr;
+    }
   }
   out->ok = out->tree != nullptr && diags.errors_in(file) == before;
   return out;
