@@ -1,6 +1,8 @@
-// bench_mln: time per inference on table-top scenes (seed Table 4.3 KB) of 7, 20 and
-// 100 objects, for grounding+folding and each engine; median of several runs, and
-// the max marginal error against exact inference.
+// bench_mln: time per inference on table-top scenes (the knowledge base of
+// domains/tabletop.ksm, grounded by the code `ksmc emit` generates from it) of 7, 20 and
+// 100 objects, for grounding+folding and each engine, and on the indoor knowledge base
+// (domains/indoor.ksm) with 20 units; median of several runs, and the max marginal error
+// against exact inference (indoor: against a long Gibbs run, exact being out of reach).
 //
 // usage: bench_mln [runs=7]
 #include <algorithm>
@@ -12,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "runtime/mln/error.h"
 #include "runtime/mln/exact.h"
 #include "runtime/mln/gibbs.h"
 #include "runtime/mln/grounder.h"
@@ -19,7 +22,8 @@
 #include "runtime/mln/log_z.h"
 #include "runtime/mln/maxwalksat.h"
 #include "runtime/mln/mcsat.h"
-#include "tests/mln/tabletop_kb.h"
+#include "indoor_factors.h"
+#include "tabletop_factors.h"
 
 using namespace ksmc::runtime::mln;
 
@@ -63,22 +67,88 @@ double max_error(const std::vector<double>& a, const std::vector<double>& b) {
   return e;
 }
 
+// The indoor knowledge base on 20 units: a corridor (unit 0) with doors to 19 rooms along
+// it, rooms next to each other adjacent too; a few rooms look like halls.
+void bench_indoor(int runs) {
+  namespace indoor = ksmc_generated::indoor;
+  const Program& program = indoor::program();
+  Domain domain = indoor::make_domain();
+  constexpr int kUnits = 20;
+  for (int u = 0; u < kUnits; ++u) domain.add(indoor::kType_unit, "U" + std::to_string(u));
+  Evidence ev(program, domain);
+  auto set1 = [&](std::int32_t p, std::int32_t a, bool v) { std::int32_t args[1] = {a}; ev.set(p, args, v); };
+  auto set2 = [&](std::int32_t p, std::int32_t a, std::int32_t b, bool v) {
+    std::int32_t args[2] = {a, b};
+    ev.set(p, args, v);
+  };
+  for (int u = 0; u < kUnits; ++u) {
+    set1(indoor::kPred_CoLi, u, u == 0);
+    set1(indoor::kPred_HaLi, u, u % 7 == 3);
+    set1(indoor::kPred_RoLi, u, u != 0 && u % 7 != 3);
+    set1(indoor::kPred_MulDoor, u, u == 0 || u % 5 == 0);
+    for (int v = 0; v < kUnits; ++v) {
+      const bool adj = u != v && (u == 0 || v == 0 || std::abs(u - v) == 1);
+      set2(indoor::kPred_Adj, u, v, adj);
+    }
+  }
+  const auto g = indoor::ground(domain, ev);
+  const auto& net = g.network;
+  std::printf("\nbench_mln: indoor KB (DESIGN section 6), %d units, median of %d runs, CPU time per call in microseconds\n",
+              kUnits, runs);
+  std::printf("%-8s %5s %6s %-34s %12s %10s\n", "units", "atoms", "clauses", "step", "time_us", "max_err");
+  GibbsOptions ref_options;
+  ref_options.burn_in = 1000;
+  ref_options.samples = 200000;
+  const auto reference = gibbs_sampling(net, ref_options);
+  auto row = [&](const std::string& step, double us, double err) {
+    if (err < 0) std::printf("%-8d %5d %6d %-34s %12.2f %10s\n", kUnits, net.num_atoms(), net.num_clauses(), step.c_str(), us, "-");
+    else std::printf("%-8d %5d %6d %-34s %12.2f %10.4f\n", kUnits, net.num_atoms(), net.num_clauses(), step.c_str(), us, err);
+  };
+  row("ground+fold (generated code)", median_us(runs, [&] { keep(indoor::ground(domain, ev)); }), -1);
+  try {
+    keep(exact_inference(net));
+    row("exact (marginals + log Z)", median_us(runs, [&] { keep(exact_inference(net)); }), -1);
+  } catch (const MlnError& e) {
+    std::printf("%-8d %5d %6d %-34s %12s %10s  (%s)\n", kUnits, net.num_atoms(), net.num_clauses(), "exact", "refused", "-",
+                e.what());
+  }
+  for (std::int64_t sweeps : {100, 1000, 10000}) {
+    GibbsOptions go;
+    go.burn_in = 10;
+    go.samples = sweeps;
+    go.seed = 7;
+    const double err = max_error(gibbs_sampling(net, go).marginals, reference.marginals);
+    row("gibbs " + std::to_string(sweeps) + " sweeps", median_us(runs, [&] { keep(gibbs_sampling(net, go)); }), err);
+  }
+  for (std::int64_t samples : {100, 1000}) {
+    McSatOptions mo;
+    mo.burn_in = 10;
+    mo.samples = samples;
+    const double err = max_error(mc_sat(net, mo).marginals, reference.marginals);
+    row("mcsat " + std::to_string(samples) + " samples", median_us(runs, [&] { keep(mc_sat(net, mo)); }), err);
+  }
+  MapOptions mapo;
+  row("map (maxwalksat)", median_us(runs, [&] { keep(max_walksat(net, mapo)); }), -1);
+  std::printf("max_err (indoor): max |marginal - reference| with the reference a Gibbs run of 200000 sweeps\n");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const int runs = argc > 1 ? std::max(5, std::atoi(argv[1])) : 7;
-  ksmc::tests::mln::TabletopKb kb;
+  namespace tabletop = ksmc_generated::tabletop;
+  const Program& program = tabletop::program();
   std::printf("bench_mln: table-top KB (16 rules), median of %d runs, CPU time per call in microseconds\n", runs);
   std::printf("%-8s %5s %6s %-34s %12s %10s\n", "objects", "atoms", "clauses", "step", "time_us", "max_err");
   for (const char* name : {"scene7.db", "scene20.db", "scene100.db"}) {
     const std::string path = std::string(KSMC_SOURCE_DIR) + "/tests/mln/data/" + name;
     const auto text = read_text_file(path);
-    Domain domain;
-    collect_db_constants(text, path, kb.program, domain);
-    Evidence ev(kb.program, domain);
-    parse_db(text, path, kb.program, domain, ev);
-    const int objects = domain.size(kb.object) - 1;
-    const auto g = ground(kb.program, domain, ev);
+    Domain domain = tabletop::make_domain();
+    collect_db_constants(text, path, program, domain);
+    Evidence ev(program, domain);
+    parse_db(text, path, program, domain, ev);
+    const int objects = domain.size(tabletop::kType_object) - 1;
+    const auto g = tabletop::ground(domain, ev);
     const auto& net = g.network;
     const auto exact = exact_inference(net);
     auto row = [&](const std::string& step, double us, double err) {
@@ -88,10 +158,11 @@ int main(int argc, char** argv) {
                        step.c_str(), us, err);
     };
     row("parse .db", median_us(runs, [&] {
-          Evidence e(kb.program, domain);
-          parse_db(text, path, kb.program, domain, e);
+          Evidence e(program, domain);
+          parse_db(text, path, program, domain, e);
         }), -1);
-    row("ground+fold", median_us(runs, [&] { keep(ground(kb.program, domain, ev)); }), -1);
+    row("ground+fold (generated code)", median_us(runs, [&] { keep(tabletop::ground(domain, ev)); }), -1);
+    row("ground+fold (generic grounder)", median_us(runs, [&] { keep(ground(program, domain, ev)); }), -1);
     row("exact (marginals + log Z)", median_us(runs, [&] { keep(exact_inference(net)); }), 0.0);
     row("exact MAP", median_us(runs, [&] { keep(exact_map(net)); }), -1);
     for (std::int64_t sweeps : {100, 1000, 10000}) {
@@ -124,5 +195,6 @@ int main(int argc, char** argv) {
         std::abs(lz.log_z - exact.log_z));
   }
   std::printf("max_err: max |marginal - exact| over atoms (for log Z: |estimate - exact|)\n");
+  bench_indoor(runs);
   return 0;
 }
