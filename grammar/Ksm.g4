@@ -21,7 +21,7 @@ item
   | 'likelihood' call ';'                                                # likelihoodItem
   | 'kernel' 'pair' IDENT '/' IDENT kernelParams? ('=' call (',' call)*)? ';' # kernelPairItem
   | 'kernel' IDENT kernelParams? ('reverse' IDENT)? ('=' call (',' call)*)? ';' # kernelItem
-  | 'schedule' '{' scheduleRow* '}'                                      # scheduleItem
+  | 'schedule' '{' (scheduleRow* | scheduleEntry (',' scheduleEntry)*) '}'  # scheduleItem
   ;
 
 externKind : IDENT | 'prior' | 'likelihood' | 'kernel' ;

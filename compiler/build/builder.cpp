@@ -370,6 +370,15 @@ class Builder {
       item.node = std::move(k);
     } else if (auto* c = dynamic_cast<P::ScheduleItemContext*>(ic)) {
       ast::ScheduleDecl s;
+      if (!c->scheduleEntry().empty()) {  // `schedule { a: 0.5, b: 0.5 }`: one row for all iterations
+        ast::ScheduleRow row;
+        row.loc = loc(c->scheduleEntry().front());
+        const antlr4::Token* last = c->scheduleEntry().back()->getStop();
+        row.end_offset = last->getStopIndex() + 1;
+        row.end_line = static_cast<int>(last->getLine());
+        for (auto* ec : c->scheduleEntry()) row.entries.push_back(ast::ScheduleEntry{ident(ec->IDENT()), number(ec->number())});
+        s.rows.push_back(std::move(row));
+      }
       for (auto* rc : c->scheduleRow()) {
         ast::ScheduleRow row;
         row.loc = loc(rc);

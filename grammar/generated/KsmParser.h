@@ -149,6 +149,8 @@ public:
   public:
     ScheduleItemContext(ItemContext *ctx);
 
+    std::vector<ScheduleEntryContext *> scheduleEntry();
+    ScheduleEntryContext* scheduleEntry(size_t i);
     std::vector<ScheduleRowContext *> scheduleRow();
     ScheduleRowContext* scheduleRow(size_t i);
   };

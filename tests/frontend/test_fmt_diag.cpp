@@ -90,3 +90,11 @@ TEST_CASE("fmt parenthesises exactly what the AST needs", "[frontend][fmt]") {
     CHECK(dump_of(f) == dump_of(r));
   }
 }
+
+TEST_CASE("fmt: a rangeless single-row schedule prints in short form", "[frontend][fmt]") {
+  CHECK(fmt_of("schedule { { a: 0.5, b: 0.5 }; }\n") == "schedule { a: 0.5, b: 0.5 }\n");
+  CHECK(dump_of("schedule { a: 0.5, b: 0.5 }\n") == dump_of("schedule { { a: 0.5, b: 0.5 }; }\n"));
+  // An empty row keeps its braces (the short form would mean "no rows").
+  CHECK(fmt_of("schedule { {} }\n") == "schedule {\n  {};\n}\n");
+  CHECK(dump_of(fmt_of("schedule { {} }\n")) == dump_of("schedule { {} }\n"));
+}
