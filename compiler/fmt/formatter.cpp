@@ -18,8 +18,8 @@ class Formatter {
 
   std::string run() {
     for (const ast::Item& item : m_.items) {
-      const auto* sched = std::get_if<ast::ScheduleDecl>(&item.node);
-      const bool block = std::holds_alternative<ast::ModelDecl>(item.node) || (sched != nullptr && !short_form(*sched));
+      const bool block = std::holds_alternative<ast::ModelDecl>(item.node) ||
+                         std::holds_alternative<ast::ScheduleDecl>(item.node);
       leading(item.loc.offset, "");
       if (!block) hoist(item.end_offset, item.loc.line, "");
       gap(item.loc.line);
@@ -157,20 +157,9 @@ class Formatter {
     }
     close_block();
   }
-  // A single row without range and with entries prints as `schedule { a: 0.5, b: 0.5 }`.
-  static bool short_form(const ast::ScheduleDecl& s) {
-    return s.rows.size() == 1 && !s.rows.front().has_range && !s.rows.front().entries.empty();
-  }
+  // Rows print one per line; the short input form `schedule { a: 1.0 }` prints as a row
+  // without range, `{ a: 1.0 };`, so its line is stable when ranges are added later.
   void emit(const ast::ScheduleDecl& s) {
-    if (short_form(s)) {
-      out_ += "schedule {";
-      const auto& entries = s.rows.front().entries;
-      for (std::size_t i = 0; i < entries.size(); ++i) {
-        out_ += std::string(i ? ", " : " ") + entries[i].kernel.name + ": " + print_number(entries[i].prob);
-      }
-      out_ += " }";
-      return;
-    }
     out_ += "schedule {\n";
     last_ = 0;
     for (const ast::ScheduleRow& r : s.rows) {

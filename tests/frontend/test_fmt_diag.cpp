@@ -91,10 +91,9 @@ TEST_CASE("fmt parenthesises exactly what the AST needs", "[frontend][fmt]") {
   }
 }
 
-TEST_CASE("fmt: a rangeless single-row schedule prints in short form", "[frontend][fmt]") {
-  CHECK(fmt_of("schedule { { a: 0.5, b: 0.5 }; }\n") == "schedule { a: 0.5, b: 0.5 }\n");
+TEST_CASE("fmt: the short schedule form prints as one rangeless row", "[frontend][fmt]") {
+  CHECK(fmt_of("schedule { a: 0.5, b: 0.5 }\n") == "schedule {\n  { a: 0.5, b: 0.5 };\n}\n");
   CHECK(dump_of("schedule { a: 0.5, b: 0.5 }\n") == dump_of("schedule { { a: 0.5, b: 0.5 }; }\n"));
-  // An empty row keeps its braces (the short form would mean "no rows").
   CHECK(fmt_of("schedule { {} }\n") == "schedule {\n  {};\n}\n");
   CHECK(dump_of(fmt_of("schedule { {} }\n")) == dump_of("schedule { {} }\n"));
 }
