@@ -1,0 +1,94 @@
+// indoor-dev end to end through its command line: bad input gives a clear message, a
+// non-zero exit and no output folder; the simulated office map is explained against its truth.
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include <sys/wait.h>
+
+#include <nlohmann/json.hpp>
+
+#include "stdlib/indoor/io/world_json_read.h"
+#include "tests/indoor_kit/kit_fixture.h"
+
+namespace fs = std::filesystem;
+using namespace ksmc::tests::indoor_kit;
+
+namespace {
+
+struct Outcome {
+  int code = -1;
+  std::string err;
+};
+
+Outcome run_dev(const std::string& args, const fs::path& dir) {
+  const fs::path err = dir / "stderr.txt";
+  const std::string cmd = std::string(INDOOR_DEV) + " " + args + " --quiet 2> " + err.string() + " > /dev/null";
+  const int st = std::system(cmd.c_str());
+  Outcome o;
+  o.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  std::ifstream f(err);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  o.err = ss.str();
+  return o;
+}
+
+void write_bytes(const fs::path& p, const std::string& bytes) {
+  std::ofstream f(p, std::ios::binary);
+  f << bytes;
+}
+
+}  // namespace
+
+TEST_CASE("indoor-dev: bad input fails cleanly without an output folder", "[indoor_kit][cli]") {
+  const fs::path d = temp_dir("cli_bad");
+  write_bytes(d / "noimage.png", "this is not an image at all\n");
+  write_bytes(d / "nores.yaml", "image: plan.pgm\norigin: [0, 0, 0]\n");
+  write_bytes(d / "tiny.pgm", std::string("P5\n1 1\n255\n") + '\xfe');
+  write_bytes(d / "huge.pgm", "P5\n20000 20000\n255\n");
+  write_bytes(d / "dark.pgm", std::string("P5\n8 8\n255\n") + std::string(64, '\0'));
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"missing.png", "missing.png"}, {"noimage.png", "noimage.png"}, {"nores.yaml", "resolution"},
+      {"tiny.pgm", "tiny.pgm"},       {"huge.pgm", "huge.pgm"},       {"dark.pgm", "free"}};
+  for (const auto& [file, needle] : cases) {
+    const fs::path out = d / ("out_" + file);
+    const Outcome o = run_dev((d / file).string() + " --out " + out.string(), d);
+    INFO(file << ": " << o.err);
+    CHECK(o.code == 1);
+    CHECK_THAT(o.err, Catch::Contains(needle));
+    CHECK(!fs::exists(out));
+  }
+  const Outcome u = run_dev((d / "tiny.pgm").string() + " --robot 1 --out " + (d / "o").string(), d);
+  CHECK(u.code != 0);
+}
+
+TEST_CASE("indoor-dev: the simulated office against its truth", "[indoor_kit][cli][slow]") {
+  const fs::path src = fs::path(KSMC_SOURCE_DIR) / "examples/indoor";
+  const fs::path d = temp_dir("cli_office");
+  const fs::path out = d / "out";
+  const Outcome o = run_dev((src / "sim_office.yaml").string() + " --out " + out.string() + " --seed 1 --iterations 20000", d);
+  INFO(o.err);
+  REQUIRE(o.code == 0);
+  for (const char* f : {"world.json", "labels.png", "overlay.png", "trace.png", "scene.dot", "summary.json"})
+    CHECK(fs::exists(out / f));
+  const auto result = ksmc::stdlib::indoor::io::read_world_json(out / "world.json");
+  const auto truth = ksmc::stdlib::indoor::io::read_world_json(src / "sim_office_truth.json");
+  const double k = result.metrics.at("cell_prediction_rate");
+  auto count = [](const ksmc::stdlib::indoor::io::WorldResult& w, const std::string& t) {
+    int n = 0;
+    for (const auto& u : w.units) n += u.type == t;
+    return n;
+  };
+  std::cout << "sim_office: K " << k << ", units " << result.units.size() << " (truth " << truth.units.size()
+            << "), rooms " << count(result, "room") << " (truth " << count(truth, "room") << "), corridors "
+            << count(result, "corridor") << " (truth " << count(truth, "corridor") << "), halls "
+            << count(result, "hall") << " (truth " << count(truth, "hall") << "), doors " << result.doors.size()
+            << " (truth " << truth.doors.size() << ")\n";
+  CHECK(k >= 0.85);
+  CHECK(count(result, "room") >= 3);
+}
