@@ -185,7 +185,13 @@ int run_infer(const lower::MlnIr& ir, const InferRequest& request, std::ostream&
     err << "\n";
     return 0;
   } catch (const mln::MlnError& e) {
-    err << "ksmc infer: error: " << e.what() << "\n";
+    // "E.db:3: message" becomes "E.db:3: error: message", like the compiler's diagnostics.
+    const std::string m = e.what();
+    const std::string prefix = request.evidence_path + ":";
+    std::size_t colon = std::string::npos;
+    if (m.rfind(prefix, 0) == 0) colon = m.find(": ", prefix.size() - 1);
+    if (colon != std::string::npos) err << m.substr(0, colon) << ": error: " << m.substr(colon + 2) << "\n";
+    else err << "ksmc infer: error: " << m << "\n";
     return 1;
   }
 }
