@@ -1,0 +1,116 @@
+// bench_tabletop_iteration: time per DDMCMC iteration of the table-top kit (refine move:
+// n = 20 candidates, incremental evidence, MLN lookup / re-run, MH accept/reject) on
+// physics-generated scenes of 5, 10 and 20 boxes, and the share of it spent in Markov
+// logic (evidence hashing, cache lookups, grounding + inference of new evidence).
+// Each run starts from a fresh model (cold MLN cache). Median of 7 runs.
+//
+//   bench_tabletop_iteration [iterations per run, default 2000]
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "runtime/mcmc/rng.h"
+#include "stdlib/tabletop/kit/refine_kernel.h"
+#include "stdlib/tabletop/kit/tabletop_model.h"
+#include "stdlib/tabletop/scene_io.h"
+#include "stdlib/tabletop/sim/generator.h"
+#include "stdlib/tabletop/sim/scene_writer.h"
+#include "tests/tabletop_kit/binding.h"
+#include "tests/tabletop_kit/config_fixture.h"
+
+namespace kit = ksmc::stdlib::tabletop::kit;
+namespace tt = ksmc::stdlib::tabletop;
+namespace sim = ksmc::stdlib::tabletop::sim;
+namespace rm = ksmc::runtime::mcmc;
+
+namespace {
+
+struct RunStats {
+  double us_per_iter = 0.0;
+  double mln_share = 0.0;
+  double mln_runs_per_1k = 0.0;
+  double acceptance = 0.0;
+};
+
+RunStats run_once(const std::shared_ptr<const tt::Scene>& scene, const std::shared_ptr<const kit::KitConfig>& cfg,
+                  long iterations, std::uint64_t seed) {
+  kit::TabletopModel model(scene, cfg, ksmc::tests::tabletop_kit::tabletop_binding());
+  const kit::RefineKernel kernel(cfg->kernels.at(0));
+  rm::Rng rng(seed);
+  const auto before = model.mln().stats();
+  long accepted = 0;
+  const auto t0 = std::chrono::steady_clock::now();
+  double lp = model.log_posterior();
+  for (long it = 0; it < iterations; ++it) {
+    const rm::Proposal p = static_cast<const rm::Kernel&>(kernel).propose(model, rng);
+    if (p.was_declined()) continue;
+    const double lp_new = model.log_posterior();
+    const double log_a = lp_new - lp + p.log_q_bwd - p.log_q_fwd;
+    if (std::log(rng.uniform_pos()) < log_a) {
+      model.accept();
+      lp = lp_new;
+      ++accepted;
+    } else {
+      model.reject();
+    }
+  }
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const auto after = model.mln().stats();
+  RunStats s;
+  s.us_per_iter = 1e6 * secs / static_cast<double>(iterations);
+  s.mln_share = (after.seconds - before.seconds) / secs;
+  s.mln_runs_per_1k = 1000.0 * static_cast<double>(after.runs - before.runs) / static_cast<double>(iterations);
+  s.acceptance = static_cast<double>(accepted) / static_cast<double>(iterations);
+  return s;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  long iterations = 2000;
+  if (argc > 1) {
+    iterations = std::strtol(argv[1], nullptr, 10);
+    if (iterations <= 0) {
+      std::cerr << "bench_tabletop_iteration: iterations must be a positive integer\n";
+      return 2;
+    }
+  }
+  constexpr int kRuns = 7;
+  const auto cfg = std::make_shared<const kit::KitConfig>(
+      kit::read_kit_config(ksmc::tests::tabletop_kit::tabletop_config()));
+  std::cout << fmt::format("table-top kit, domains/tabletop.ksm parameters, {} iterations per run, median of {} runs\n",
+                           iterations, kRuns);
+  std::cout << "| boxes | objects | us/iteration | MLN share | MLN runs /1k it | acceptance |\n"
+               "|------:|--------:|-------------:|----------:|----------------:|-----------:|\n";
+  for (const int n : {5, 10, 20}) {
+    sim::GeneratorOptions opt;
+    opt.min_objects = opt.max_objects = n;
+    const auto g = sim::generate_scene(sim::scene_seed(77, static_cast<std::uint64_t>(n)), opt);
+    auto load = tt::parse_scene(nlohmann::json::parse(sim::scene_json(g)), "bench_scene.json", ".");
+    const auto scene = std::make_shared<const tt::Scene>(std::move(load.scene));
+    std::vector<double> us, share, runs, acc;
+    for (int r = 0; r < kRuns; ++r) {
+      const RunStats s = run_once(scene, cfg, iterations, 1 + static_cast<std::uint64_t>(r));
+      us.push_back(s.us_per_iter);
+      share.push_back(s.mln_share);
+      runs.push_back(s.mln_runs_per_1k);
+      acc.push_back(s.acceptance);
+    }
+    std::cout << fmt::format("| {:>5} | {:>7} | {:>12.1f} | {:>8.1f}% | {:>15.1f} | {:>10.3f} |\n", n,
+                             scene->objects.size(), median(us), 100.0 * median(share), median(runs), median(acc));
+  }
+  return 0;
+}

@@ -1,0 +1,22 @@
+// keypoints.gaussian(sigma, robust, outlier_px) of stdlib/tabletop.ksm, eq. 4.4.
+//
+// Each matched keypoint i of an object contributes, with r_i the pixel residual between
+// the observed and the projected keypoint (isotropic σ):
+//   plain:   log N2(r_i; σ) = −log(2πσ²) − |r_i|²/(2σ²)
+//   robust:  −log(2πσ²) − min(|r_i|, outlier_px)²/(2σ²)
+// i.e. the robust variant caps a residual beyond `outlier_px` at the constant penalty of
+// a residual of exactly `outlier_px` (what the .ksm signature documents). A keypoint that
+// does not project (behind the camera) makes the plain likelihood −∞ and costs the
+// outlier penalty in the robust one. An object without keypoints contributes 0.
+#pragma once
+
+#include "stdlib/tabletop/kit/kit_config.h"
+#include "stdlib/tabletop/pose.h"
+#include "stdlib/tabletop/scene.h"
+
+namespace ksmc::stdlib::tabletop::kit {
+
+double object_log_likelihood(const Scene& scene, const SceneObject& object, const Pose& pose_in_table,
+                             const KeypointModel& model);
+
+}  // namespace ksmc::stdlib::tabletop::kit

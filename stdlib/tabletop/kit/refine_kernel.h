@@ -1,0 +1,30 @@
+// The DDMCMC `refine` move of §4.9 (pose.perturb): choose one object uniformly, draw
+// `candidates` Gaussian perturbations of its pose (σ_t, σ_r), weight them and the current
+// pose by the object's keypoint likelihood, and propose the best one. Q is eq. 4.6/4.7
+// (stdlib/tabletop/pose_proposal.h: proposal_q) times the object choice 1/n in both
+// directions (the reverse move picks the same object with the same probability, so the
+// factor cancels in the ratio; it is included so log_q is the move's real selection
+// probability). The kernel is its own reverse.
+#pragma once
+
+#include <string>
+
+#include "runtime/mcmc/model.h"
+#include "stdlib/tabletop/kit/kit_config.h"
+#include "stdlib/tabletop/kit/tabletop_model.h"
+
+namespace ksmc::stdlib::tabletop::kit {
+
+class RefineKernel : public runtime::mcmc::NamedKernel<TabletopModel> {
+ public:
+  explicit RefineKernel(RefineKernelConfig config);
+  const RefineKernelConfig& config() const noexcept { return config_; }
+
+ protected:
+  runtime::mcmc::Proposal propose_typed(TabletopModel& model, runtime::mcmc::Rng& rng) const override;
+
+ private:
+  RefineKernelConfig config_;
+};
+
+}  // namespace ksmc::stdlib::tabletop::kit

@@ -1,0 +1,83 @@
+// Hand-built DomainConfig mirroring domains/tabletop.ksm exactly (base units: 3 deg =
+// 0.05235987755982988 rad, 4 mm = 0.004 m), standing in for the generated
+// tabletop_model.cpp until the compiler emits it. `tolerances` lets tests try other
+// extract tolerances (the calibration in docs/tabletop_kit.md); the defaults are the .ksm's.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "runtime/domain/config.h"
+
+namespace ksmc::tests::tabletop_kit {
+
+namespace rd = ksmc::runtime::domain;
+
+struct Tolerances {
+  double stable_tol = 0.05235987755982988;  // 3 deg
+  double contact_eps = 0.004;               // 4 mm
+  double intersect_eps = 0.004;             // 4 mm
+  double hover_eps = 0.004;                 // 4 mm
+};
+
+// The values measured on the generated scenes and the HOPE frame (docs/tabletop_kit.md).
+inline Tolerances recommended_tolerances() {
+  Tolerances t;
+  t.stable_tol = 0.17453292519943295;  // 10 deg
+  t.contact_eps = 0.004;
+  t.intersect_eps = 0.005;
+  t.hover_eps = 0.004;
+  return t;
+}
+
+inline rd::Arg arg(std::string name, rd::Value v) { return rd::Arg{std::move(name), std::move(v)}; }
+inline rd::Value idx(const std::string& coll, const std::string& var) {
+  return rd::Value::index(coll, {rd::Value::name(var)});
+}
+inline rd::Call call(std::string name, std::vector<rd::Arg> args, int line) {
+  return rd::Call{std::move(name), std::move(args), "domains/tabletop.ksm:" + std::to_string(line)};
+}
+
+inline rd::DomainConfig tabletop_config(const Tolerances& tol = {}) {
+  rd::DomainConfig c;
+  c.domain = "tabletop";
+  c.source = "domains/tabletop.ksm";
+  c.model = {{"pose", true, "object", "se3", true}, {"size", true, "object", "vec3", false}};
+  auto pair_args = [](const std::string& a, const std::string& b) {
+    return std::vector<rd::Arg>{arg("pose_a", idx("pose", a)), arg("size_a", idx("size", a)),
+                                arg("pose_b", idx("pose", b)), arg("size_b", idx("size", b))};
+  };
+  c.extract.push_back({"stable", {"o"},
+                       call("obb.stable", {arg("pose", idx("pose", "o")), arg("size", idx("size", "o")),
+                                           arg("tol", rd::Value::num(tol.stable_tol))}, 41)});
+  auto contact = pair_args("a", "b");
+  contact.push_back(arg("eps", rd::Value::num(tol.contact_eps)));
+  c.extract.push_back({"contact", {"a", "b"}, call("obb.contact", contact, 42)});
+  auto inter = pair_args("a", "b");
+  inter.push_back(arg("eps", rd::Value::num(tol.intersect_eps)));
+  c.extract.push_back({"intersect", {"a", "b"}, call("obb.intersect", inter, 43)});
+  c.extract.push_back({"higher", {"a", "b"}, call("obb.higher", pair_args("a", "b"), 44)});
+  c.extract.push_back({"hover", {"o"},
+                       call("obb.hover", {arg("o", rd::Value::name("o")), arg("eps", rd::Value::num(tol.hover_eps))}, 45)});
+  c.extract.push_back({"table", {"o"}, call("scene.is_table", {arg("o", rd::Value::name("o"))}, 46)});
+  c.prior.push_back({{}, {}, call("mln", {}, 48)});
+  c.likelihood.push_back(call("keypoints.gaussian",
+                              {arg("sigma", rd::Value::num(1.0)), arg("robust", rd::Value::flag(false)),
+                               arg("outlier_px", rd::Value::num(20.0))}, 49));
+  rd::Kernel k;
+  k.name = "refine";
+  k.reverse = "refine";
+  k.params = {{"o", "object"}};
+  k.sources = {call("pose.perturb", {arg("pose", idx("pose", "o")), arg("sigma_t", rd::Value::num(0.003)),
+                                     arg("sigma_r", rd::Value::num(0.03490658503988659)),
+                                     arg("candidates", rd::Value::num(20))}, 52)};
+  k.where = "domains/tabletop.ksm:52";
+  c.kernels.push_back(k);
+  rd::ScheduleRow row;
+  row.probabilities = {{"refine", 1.0}};
+  c.schedule.push_back(row);
+  return c;
+}
+
+}  // namespace ksmc::tests::tabletop_kit

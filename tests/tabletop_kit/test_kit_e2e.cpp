@@ -1,0 +1,103 @@
+// End to end on physics-generated scenes (stdlib/tabletop/sim) and on the real HOPE frame:
+// the kit's sampler + MLN against the generator's truth.
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <iostream>
+
+#include "stdlib/tabletop/hope_import.h"
+#include "stdlib/tabletop/scene_io.h"
+#include "stdlib/tabletop/sim/generator.h"
+#include "stdlib/tabletop/sim/scene_writer.h"
+#include "tests/support/shared_data.h"
+#include "tests/tabletop_kit/config_fixture.h"
+#include "tests/tabletop_kit/e2e_support.h"
+
+using namespace ksmc::tests::tabletop_kit;
+namespace sim = ksmc::stdlib::tabletop::sim;
+
+namespace {
+
+constexpr int kScenes = 50;
+constexpr std::uint64_t kIterations = 300;
+
+struct Generated {
+  std::shared_ptr<const tt::Scene> scene;
+  nlohmann::json truth;
+};
+
+const std::vector<Generated>& scenes() {
+  static const std::vector<Generated> all = [] {
+    std::vector<Generated> v;
+    sim::GeneratorOptions opt;
+    for (int i = 0; i < kScenes; ++i) {
+      const auto g = sim::generate_scene(sim::scene_seed(2026, static_cast<std::uint64_t>(i)), opt);
+      const std::string name = fmt::format("scene_{:03}.json", i);
+      auto load = tt::parse_scene(nlohmann::json::parse(sim::scene_json(g)), name, ".");
+      v.push_back({std::make_shared<const tt::Scene>(std::move(load.scene)), nlohmann::json::parse(sim::truth_json(g))});
+    }
+    return v;
+  }();
+  return all;
+}
+
+Score run_all(const Tolerances& tol) {
+  const auto cfg = std::make_shared<const kit::KitConfig>(kit::read_kit_config(tabletop_config(tol)));
+  Score s;
+  for (std::size_t i = 0; i < scenes().size(); ++i)
+    score(run_kit(cfg, scenes()[i].scene, kIterations, 1 + i), scenes()[i].truth, s);
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("50 generated scenes: false / hidden / support accuracy") {
+  long objects = 0, n_false = 0, n_hidden = 0;
+  for (const auto& g : scenes()) {
+    objects += static_cast<long>(g.scene->objects.size());
+    for (const auto& o : g.truth["objects"]) {
+      n_false += o["false"].get<bool>();
+      n_hidden += o["hidden"].get<bool>();
+    }
+  }
+  std::cout << fmt::format("{} scenes, {} objects ({} false, {} hidden), {} iterations per scene\n", kScenes,
+                           objects, n_false, n_hidden, kIterations);
+  REQUIRE(n_false > 10);
+  REQUIRE(n_hidden > 10);
+
+  const Score ksm = run_all(Tolerances{});
+  std::cout << "domains/tabletop.ksm tolerances (3 deg, 4 mm, 4 mm):\n" << table(ksm);
+  const Score rec = run_all(recommended_tolerances());
+  std::cout << "recommended tolerances (10 deg, contact 4 mm, intersect 5 mm):\n" << table(rec);
+
+  CHECK(rec.is_false.f1() >= 0.95);
+  CHECK(rec.is_hidden.f1() >= 0.90);
+  CHECK(rec.support.f1() >= 0.90);
+}
+
+TEST_CASE("HOPE video frame: nothing false or hidden, everything on the table") {
+  const std::string rel = "data/tabletop/hope_video_frame/meta_data.json";
+  if (!ksmc::tests::have_shared(rel)) return;
+  const auto hope = tt::import_hope_file(ksmc::tests::shared_dir() / rel);
+  const auto scene = std::make_shared<const tt::Scene>(hope.scene);
+  for (const auto& [label, tol] : {std::pair<const char*, Tolerances>{"domains/tabletop.ksm", Tolerances{}},
+                                   std::pair<const char*, Tolerances>{"recommended", recommended_tolerances()}}) {
+    const auto cfg = std::make_shared<const kit::KitConfig>(kit::read_kit_config(tabletop_config(tol)));
+    const tt::TabletopResult r = run_kit(cfg, scene, 500, 1);
+    const auto sup = tt::support_edges(r.evidence);
+    int reported_false = 0, reported_hidden = 0, on_table = 0;
+    for (std::size_t i = 0; i < r.scene.objects.size(); ++i) {
+      reported_false += tt::decide(r.probabilities[i].false_prob).value_or(false);
+      reported_hidden += tt::decide(r.probabilities[i].hidden_prob).value_or(false);
+      for (const auto& e : sup) on_table += (e.first == r.scene.objects[i].id && e.second == "table");
+    }
+    std::cout << fmt::format("HOPE ({}): {} objects, {} false, {} hidden, {} supported by the table, {} support edges\n",
+                             label, r.scene.objects.size(), reported_false, reported_hidden, on_table, sup.size());
+    if (std::string(label) == "recommended") {
+      CHECK(reported_false == 0);
+      CHECK(reported_hidden == 0);
+      CHECK(on_table == static_cast<int>(r.scene.objects.size()));
+      CHECK(sup.size() == r.scene.objects.size());
+    }
+  }
+}
