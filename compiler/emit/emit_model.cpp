@@ -8,20 +8,7 @@
 namespace ksmc::compiler::emit {
 namespace {
 
-std::string one_line(std::string_view text) {
-  std::string out;
-  bool space = false;
-  for (char ch : text) {
-    if (ch == '\n' || ch == '\r' || ch == '\t' || ch == ' ') {
-      space = !out.empty();
-      continue;
-    }
-    if (space) out.push_back(' ');
-    space = false;
-    out.push_back(ch);
-  }
-  return out;
-}
+using lower::one_line;
 
 class ModelEmitter {
  public:

@@ -15,6 +15,21 @@ std::string format_weight(double w) {
   return std::string(buf, res.ptr);
 }
 
+std::string one_line(std::string_view text) {
+  std::string out;
+  bool space = false;
+  for (char ch : text) {
+    if (ch == '\n' || ch == '\r' || ch == '\t' || ch == ' ') {
+      space = !out.empty();
+      continue;
+    }
+    if (space) out.push_back(' ');
+    space = false;
+    out.push_back(ch);
+  }
+  return out;
+}
+
 std::string clause_text(const mln::Program& program, const mln::Clause& c) {
   std::string out;
   for (std::size_t i = 0; i < c.literals.size(); ++i) {

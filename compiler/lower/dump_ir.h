@@ -3,6 +3,8 @@
 #pragma once
 
 #include <ostream>
+#include <string>
+#include <string_view>
 
 #include "compiler/lower/mln_ir.h"
 
@@ -12,6 +14,9 @@ void dump_ir(const MlnIr& ir, std::ostream& out);
 
 // Shortest decimal spelling that reads back to the same double ("inf" for +inf).
 std::string format_weight(double w);
+
+// Source text on one line: runs of white space (newlines included) become one space.
+std::string one_line(std::string_view text);
 
 // `!contact(a, b) v hidden(o)` for a clause of the program.
 std::string clause_text(const runtime::mln::Program& program, const runtime::mln::Clause& c);

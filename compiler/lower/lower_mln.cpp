@@ -8,6 +8,7 @@
 #include <string>
 
 #include "compiler/lower/cnf.h"
+#include "compiler/lower/dump_ir.h"
 
 namespace ksmc::compiler::lower {
 namespace {
@@ -99,21 +100,6 @@ class Lowerer {
 
   mln::SourceLoc source_loc(const ast::Loc& loc) const {
     return mln::SourceLoc{sources_.path(loc.file), loc.line};
-  }
-
-  static std::string one_line(const std::string& text) {
-    std::string out;
-    bool space = false;
-    for (char ch : text) {
-      if (ch == '\n' || ch == '\r' || ch == '\t' || ch == ' ') {
-        space = !out.empty();
-        continue;
-      }
-      if (space) out.push_back(' ');
-      space = false;
-      out.push_back(ch);
-    }
-    return out;
   }
 
   // The rule's formula as written, on one line, without its weight prefix (`hard`,
