@@ -19,6 +19,9 @@ struct Tolerances {
   double contact_eps = 0.004;               // 4 mm
   double intersect_eps = 0.004;             // 4 mm
   double hover_eps = 0.004;                 // 4 mm
+  double vertical_eps = 0.0;                // > 0: add the optional vertical_eps to contact/intersect
+  bool robust = false;                      // keypoints.gaussian(robust, outlier_px)
+  double outlier_px = 20.0;
 };
 
 // The values measured on the generated scenes and the HOPE frame (docs/tabletop_kit.md).
@@ -28,6 +31,8 @@ inline Tolerances recommended_tolerances() {
   t.contact_eps = 0.004;
   t.intersect_eps = 0.005;
   t.hover_eps = 0.004;
+  t.robust = true;
+  t.outlier_px = 5.0;
   return t;
 }
 
@@ -53,9 +58,11 @@ inline rd::DomainConfig tabletop_config(const Tolerances& tol = {}) {
                                            arg("tol", rd::Value::num(tol.stable_tol))}, 41)});
   auto contact = pair_args("a", "b");
   contact.push_back(arg("eps", rd::Value::num(tol.contact_eps)));
+  if (tol.vertical_eps > 0) contact.push_back(arg("vertical_eps", rd::Value::num(tol.vertical_eps)));
   c.extract.push_back({"contact", {"a", "b"}, call("obb.contact", contact, 42)});
   auto inter = pair_args("a", "b");
   inter.push_back(arg("eps", rd::Value::num(tol.intersect_eps)));
+  if (tol.vertical_eps > 0) inter.push_back(arg("vertical_eps", rd::Value::num(tol.vertical_eps)));
   c.extract.push_back({"intersect", {"a", "b"}, call("obb.intersect", inter, 43)});
   c.extract.push_back({"higher", {"a", "b"}, call("obb.higher", pair_args("a", "b"), 44)});
   c.extract.push_back({"hover", {"o"},
@@ -63,8 +70,8 @@ inline rd::DomainConfig tabletop_config(const Tolerances& tol = {}) {
   c.extract.push_back({"table", {"o"}, call("scene.is_table", {arg("o", rd::Value::name("o"))}, 46)});
   c.prior.push_back({{}, {}, call("mln", {}, 48)});
   c.likelihood.push_back(call("keypoints.gaussian",
-                              {arg("sigma", rd::Value::num(1.0)), arg("robust", rd::Value::flag(false)),
-                               arg("outlier_px", rd::Value::num(20.0))}, 49));
+                              {arg("sigma", rd::Value::num(1.0)), arg("robust", rd::Value::flag(tol.robust)),
+                               arg("outlier_px", rd::Value::num(tol.outlier_px))}, 49));
   rd::Kernel k;
   k.name = "refine";
   k.reverse = "refine";

@@ -79,6 +79,8 @@ void read_model(const rd::DomainConfig& cfg) {
 void read_extracts(const rd::DomainConfig& cfg, KitConfig& out) {
   std::set<std::string> seen;
   double contact_eps = -1.0, intersect_eps = -1.0, stable_tol = -1.0;
+  double vertical_contact_eps = out.evidence.vertical_contact_eps;
+  double vertical_intersect_eps = out.evidence.vertical_intersect_eps;
   std::string hover_where;
   for (const auto& e : cfg.extract) {
     const auto it = extract_specs().find(e.predicate);
@@ -106,6 +108,12 @@ void read_extracts(const rd::DomainConfig& cfg, KitConfig& out) {
       expect_index(c, "size_b", "size", e.vars[1]);
       if (e.predicate == "contact") contact_eps = positive(c, "eps");
       if (e.predicate == "intersect") intersect_eps = positive(c, "eps");
+      // Optional (not yet in stdlib/tabletop.ksm): the tolerance for near-vertical gaps /
+      // penetrations between stacked boxes and the table; stdlib default when absent.
+      if (c.find("vertical_eps")) {
+        if (e.predicate == "contact") vertical_contact_eps = positive(c, "vertical_eps");
+        if (e.predicate == "intersect") vertical_intersect_eps = positive(c, "vertical_eps");
+      }
     } else if (e.predicate == "hover") {
       expect_name(c, "o", e.vars[0]);
       out.hover_eps = positive(c, "eps");
@@ -127,8 +135,8 @@ void read_extracts(const rd::DomainConfig& cfg, KitConfig& out) {
   out.evidence.stable_tol_rad = stable_tol;
   out.evidence.contact_eps = contact_eps;
   out.evidence.intersect_eps = intersect_eps;
-  out.evidence.vertical_contact_eps = std::max(out.evidence.vertical_contact_eps, contact_eps);
-  out.evidence.vertical_intersect_eps = std::max(out.evidence.vertical_intersect_eps, intersect_eps);
+  out.evidence.vertical_contact_eps = std::max(vertical_contact_eps, contact_eps);
+  out.evidence.vertical_intersect_eps = std::max(vertical_intersect_eps, intersect_eps);
 }
 
 void read_prior_likelihood(const rd::DomainConfig& cfg, KitConfig& out) {

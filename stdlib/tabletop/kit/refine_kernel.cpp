@@ -12,9 +12,12 @@ RefineKernel::RefineKernel(RefineKernelConfig config)
     : NamedKernel(config.name, config.reverse), config_(std::move(config)) {}
 
 runtime::mcmc::Proposal RefineKernel::propose_typed(TabletopModel& model, runtime::mcmc::Rng& rng) const {
-  const std::size_t n = model.scene().objects.size();
+  // Data-driven: only objects with keypoint observations can be refined (an object without
+  // any has a flat likelihood, and moving it would follow the prior alone).
+  const std::vector<std::size_t>& movable = model.observed_objects();
+  const std::size_t n = movable.size();
   if (n == 0) return runtime::mcmc::Proposal::declined();
-  const std::size_t object = static_cast<std::size_t>(rng.uniform_int(n));
+  const std::size_t object = movable[static_cast<std::size_t>(rng.uniform_int(n))];
   // The stdlib's portable perturbation runs on std::mt19937_64; seed one per move from the
   // chain's generator so the chain stays reproducible.
   std::mt19937_64 mt(rng());

@@ -1,6 +1,8 @@
-// The DDMCMC `refine` move of §4.9 (pose.perturb): choose one object uniformly, draw
-// `candidates` Gaussian perturbations of its pose (σ_t, σ_r), weight them and the current
-// pose by the object's keypoint likelihood, and propose the best one. Q is eq. 4.6/4.7
+// The DDMCMC `refine` move of §4.9 (pose.perturb): choose one object uniformly among the
+// objects with keypoint observations (an object without any has a flat likelihood: moving
+// it would follow the prior alone), draw `candidates` Gaussian perturbations of its pose
+// (σ_t, σ_r), weight them and the current pose by the object's keypoint likelihood, and
+// propose the best one. Q is eq. 4.6/4.7
 // (stdlib/tabletop/pose_proposal.h: proposal_q) times the object choice 1/n in both
 // directions (the reverse move picks the same object with the same probability, so the
 // factor cancels in the ratio; it is included so log_q is the move's real selection

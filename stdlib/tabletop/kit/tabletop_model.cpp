@@ -24,6 +24,8 @@ std::vector<std::string> body_ids(const Scene& s) {
 TabletopModel::TabletopModel(std::shared_ptr<const Scene> initial, std::shared_ptr<const KitConfig> config,
                              const runtime::domain::MlnBinding& binding)
     : config_(std::move(config)), scene_(*initial), mln_(binding, body_ids(scene_)) {
+  for (std::size_t i = 0; i < scene_.objects.size(); ++i)
+    if (!scene_.objects[i].keypoints_model.empty()) observed_.push_back(i);
   recompute_all();
 }
 

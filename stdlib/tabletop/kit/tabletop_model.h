@@ -44,6 +44,8 @@ class TabletopModel : public runtime::mcmc::Model {
   const MlnOutcome& mln_outcome() const noexcept { return *outcome_; }
   double object_log_likelihood(std::size_t object) const { return object_ll_[object]; }
   double object_log_likelihood_at(std::size_t object, const Pose& pose) const;
+  // Indices of the objects with at least one keypoint (what the refine move may pick).
+  const std::vector<std::size_t>& observed_objects() const noexcept { return observed_; }
   const KitConfig& config() const noexcept { return *config_; }
   MlnEvaluator& mln() noexcept { return mln_; }
   const MlnEvaluator& mln() const noexcept { return mln_; }
@@ -56,6 +58,7 @@ class TabletopModel : public runtime::mcmc::Model {
   MlnEvaluator mln_;
   Evidence evidence_;
   Evidence tentative_;
+  std::vector<std::size_t> observed_;
   std::vector<double> object_ll_;
   double log_likelihood_ = 0.0;
   std::shared_ptr<const MlnOutcome> outcome_;
