@@ -45,7 +45,7 @@ TEST_CASE("indoor model: a rejected proposal restores the state exactly", "[indo
   mcmc::Rng rng(11);
   int proposed = 0, relabels = 0;
   for (int i = 0; i < 3000; ++i) {
-    const auto& k = setup.kernels[static_cast<std::size_t>(i) % setup.kernels.size()];
+    const auto& k = setup.kernels[i < 40 ? 0 : static_cast<std::size_t>(i) % setup.kernels.size()];  // ADD first
     const double ll = m.log_likelihood(), lp = m.log_prior();
     const auto p = k->propose(m, rng);
     if (p.was_declined()) {
@@ -58,10 +58,8 @@ TEST_CASE("indoor model: a rejected proposal restores the state exactly", "[indo
       m.reject();
       CHECK(m.log_likelihood() == ll);
       CHECK(m.log_prior() == lp);
-    } else if (m.log_posterior() >= ll + lp - 5.0) {
-      m.accept();
     } else {
-      m.reject();
+      m.accept();
     }
     for (const Unit& u : m.scored().world().units()) relabels += u.lut_class;
   }

@@ -119,10 +119,19 @@ bool IndoorModel::propose(KernelKind k, mcmc::Rng& rng, double& log_q_fwd, doubl
   const RunTuning& t = in_->tuning;
   if (t.source_refresh > 0 && (iteration_ == 1 || iteration_ % t.source_refresh == 0)) refresh_sources();
   Pending pend;
+  pend.old_offset = offset_;
   pend.old_pairs = sale_pairs_;
   pend.old_sale = sale_log_prior_;
   if (sem_ && t.semantic_every > 0 && iteration_ >= t.semantic_after &&
-      (iteration_ - t.semantic_after) % t.semantic_every == 0) {
+      (iteration_ - t.semantic_after) % t.semantic_every == 0)
+    semantic_due_ = true;
+  double target_shift = 0.0;
+  if (semantic_due_ && sw_.world().units().size() > t.semantic_max_units) semantic_due_ = false;
+  if (semantic_due_) {
+    // The refresh changes the target (types -> tables, SaLe pairs -> prior) for the current
+    // world W; its own change of log p(W) is reported in log_q_fwd so that the engine's
+    // acceptance ratio compares M' with M under the refreshed target.
+    const double before = log_posterior();
     const SemanticResult r = sem_->evaluate(sw_.world());
     auto changes = relabel(r);
     if (!changes.empty()) {
@@ -133,26 +142,33 @@ bool IndoorModel::propose(KernelKind k, mcmc::Rng& rng, double& log_q_fwd, doubl
       pend.relabel = std::move(m);
     }
     sale_pairs_ = r.same_length;
+    sale_log_prior_ = sale_log_prior(sw_.world());
+    target_shift = log_posterior() - before;
+    offset_ += target_shift;
+    pend.refresh = true;
   }
   auto p = ks_->propose(k, sw_.world(), krng_);
   if (!p) {
-    // Keep the refresh (it is a deterministic function of the current world) only as part of
-    // an accepted proposal: undo it here.
+    // Declined: undo the refresh too (it stays due and rides on the next proposal).
     if (pend.relabel) sw_.revert(*pend.relabel);
     sale_pairs_ = std::move(pend.old_pairs);
     sale_log_prior_ = pend.old_sale;
+    offset_ = pend.old_offset;
     return false;
   }
   sw_.apply(p->move);
   pend.move = std::move(p->move);
-  sale_log_prior_ = sale_log_prior(sw_.world());
+  if (!sale_pairs_.empty()) sale_log_prior_ = sale_log_prior(sw_.world());
   log_q_fwd = p->log_q_fwd;
   log_q_bwd = p->log_q_bwd;
   pending_ = std::move(pend);
   return true;
 }
 
-void IndoorModel::accept() { pending_.reset(); }
+void IndoorModel::accept() {
+  if (pending_ && pending_->refresh) semantic_due_ = false;
+  pending_.reset();
+}
 
 void IndoorModel::reject() {
   if (!pending_) return;
@@ -160,6 +176,7 @@ void IndoorModel::reject() {
   if (pending_->relabel) sw_.revert(*pending_->relabel);
   sale_pairs_ = std::move(pending_->old_pairs);
   sale_log_prior_ = pending_->old_sale;
+  offset_ = pending_->old_offset;
   pending_.reset();
 }
 
@@ -183,6 +200,7 @@ mcmc::Snapshot IndoorModel::snapshot() const {
   s["doors"] = std::move(doors);
   s["same_length"] = std::move(pairs);
   s["proposals"] = iteration_;
+  s["target_offset"] = offset_;
   return s;
 }
 
@@ -208,6 +226,7 @@ void IndoorModel::restore(const mcmc::Snapshot& s) {
     sale_pairs_.clear();
     for (const auto& p : s.at("same_length")) sale_pairs_.emplace_back(p.at(0).get<UnitId>(), p.at(1).get<UnitId>());
     iteration_ = s.value("proposals", std::uint64_t{0});
+    offset_ = s.value("target_offset", 0.0);
   } catch (const nlohmann::json::exception& e) {
     throw std::invalid_argument(std::string("indoor state snapshot: ") + e.what());
   }

@@ -3,7 +3,11 @@
 // every `semantic_every` proposals the Markov logic types of the units are refreshed (cached by
 // evidence) and folded into that proposal: units typed Room/Hall (the lenient types) switch to
 // the lenient likelihood table, and the pairs with P(SaLe) above the threshold get the Gaussian
-// wall-length prior. The refresh is part of the tentative state, so a rejection undoes it.
+// wall-length prior. The refresh rides on the next proposal (a rejection undoes it and it
+// stays due). It changes the target (like a tempering step): its own jump of log p(W) on the
+// current world is added to a running offset that log_prior() subtracts, so the engine's
+// acceptance ratio compares M' with M under the refreshed target and its best state is
+// tracked along one continuous scale.
 #pragma once
 
 #include <cstdint>
@@ -26,6 +30,7 @@ struct RunTuning {
   std::uint64_t semantic_every = 500;   // proposals between semantic refreshes (0 = never)
   std::uint64_t semantic_after = 0;     // first proposal with a semantic refresh
   std::uint64_t source_refresh = 200;   // proposals between FSU / door candidate refreshes
+  std::size_t semantic_max_units = 80;  // worlds with more units skip the refresh (cost bound)
 };
 
 // Everything the chains share (read-only after construction).
@@ -48,7 +53,13 @@ class IndoorModel final : public runtime::mcmc::Model {
   explicit IndoorModel(std::shared_ptr<const SharedInput> in);
 
   double log_likelihood() const override { return sw_.log_likelihood(); }
-  double log_prior() const override { return sw_.log_prior() + sale_log_prior_; }
+  // log p(W) of the current target minus target_offset(): the sum of the log-posterior jumps
+  // of the semantic refreshes, so that the engine's running value, its acceptance ratios and
+  // its best state stay comparable across refreshes (see the header comment).
+  double log_prior() const override { return sw_.log_prior() + sale_log_prior_ - offset_; }
+  double target_offset() const { return offset_; }
+  // log p(D|W) + log p(W) under the current target, without the offset.
+  double true_log_posterior() const { return sw_.log_likelihood() + sw_.log_prior() + sale_log_prior_; }
   void accept() override;
   void reject() override;
   runtime::mcmc::Snapshot snapshot() const override;
@@ -76,6 +87,7 @@ class IndoorModel final : public runtime::mcmc::Model {
   std::mt19937_64 krng_;
   bool krng_seeded_ = false;
   std::uint64_t iteration_ = 0;
+  bool semantic_due_ = false;
   // Sources.
   std::vector<CandidateUnit> units_;
   std::vector<CandidateDoor> doors_;
@@ -83,11 +95,14 @@ class IndoorModel final : public runtime::mcmc::Model {
   // Semantic state.
   std::vector<std::pair<UnitId, UnitId>> sale_pairs_;
   double sale_log_prior_ = 0.0;
+  double offset_ = 0.0;
   // Pending proposal.
   struct Pending {
     std::optional<Move> relabel, move;
     std::vector<std::pair<UnitId, UnitId>> old_pairs;
     double old_sale = 0.0;
+    double old_offset = 0.0;
+    bool refresh = false;
   };
   std::optional<Pending> pending_;
 };

@@ -105,9 +105,10 @@ io::WorldResult make_result(IndoorModel& m, const io::OccupancyMap& map, const s
   r.metrics["iterations"] = static_cast<double>(run.iterations);
   r.metrics["seconds"] = secs;
   r.metrics["iterations_per_second"] = secs > 0.0 ? static_cast<double>(run.iterations) / secs : 0.0;
-  r.metrics["log_posterior"] = m.log_posterior();
+  r.metrics["log_posterior"] = m.true_log_posterior();
   r.metrics["log_likelihood"] = m.log_likelihood();
-  r.metrics["log_prior"] = m.log_prior();
+  r.metrics["log_prior"] = m.true_log_posterior() - m.log_likelihood();
+  r.metrics["target_offset"] = m.target_offset();
   r.metrics["units"] = static_cast<double>(w.units().size());
   r.metrics["doors"] = static_cast<double>(w.doors().size());
   r.metrics["best_iteration"] = static_cast<double>(run.best().best_iteration);
