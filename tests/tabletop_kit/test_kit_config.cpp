@@ -127,10 +127,19 @@ TEST_CASE("bad parameters and missing items are ConfigErrors") {
   }
 }
 
-TEST_CASE("domain_spec validates the configuration up front") {
+TEST_CASE("domain_spec reports a configuration error when the binary loads") {
   auto c = tabletop_config();
   c.likelihood[0].name = "keypoints.cauchy";
-  CHECK_THROWS_AS(kit::domain_spec(c, tabletop_binding()), rd::ConfigError);
+  const auto bad = kit::domain_spec(c, tabletop_binding());
+  ksmc::runtime::cli::DomainInput in;
+  in.inputs = {std::filesystem::path(KSMC_SOURCE_DIR) / "examples/tabletop/stack.json"};
+  in.flags.set("input-format", "scene", false);
+  try {
+    (void)bad.load(in);
+    FAIL("no ConfigError");
+  } catch (const rd::ConfigError& e) {
+    CHECK(std::string(e.what()).find("domains/tabletop.ksm:49") != std::string::npos);
+  }
   const auto spec = kit::domain_spec(tabletop_config(), tabletop_binding());
   CHECK(spec.name == "tabletop");
   CHECK(static_cast<bool>(spec.load));

@@ -96,9 +96,16 @@ KitSetup make_setup(std::shared_ptr<const KitConfig> config, const runtime::doma
 }
 
 cli::DomainSpec domain_spec(const runtime::domain::DomainConfig& config, const runtime::domain::MlnBinding& binding) {
-  auto kit = std::make_shared<const KitConfig>(read_kit_config(config));
-  // Check the binding against the program now rather than at the first model.
-  { MlnEvaluator probe(binding, {std::string(kTableId)}); }
+  // Validated now; a configuration error is reported by `load` (exit code 1 with the
+  // message) so the generated main, which has no handler of its own, never terminates.
+  std::shared_ptr<const KitConfig> kit;
+  std::string config_error;
+  try {
+    kit = std::make_shared<const KitConfig>(read_kit_config(config));
+    MlnEvaluator probe(binding, {std::string(kTableId)});  // the binding fits the kit
+  } catch (const runtime::domain::ConfigError& e) {
+    config_error = e.what();
+  }
   cli::DomainSpec spec;
   spec.name = config.domain;
   spec.version = "1.0.0";
@@ -107,7 +114,8 @@ cli::DomainSpec domain_spec(const runtime::domain::DomainConfig& config, const r
   spec.default_iterations = 2000;
   spec.flags = {{"input-format", "input format: scene (scene.json) or hope (HOPE meta_data.json)", "scene",
                  cli::DomainFlag::Kind::text}};
-  spec.load = [kit, binding](const cli::DomainInput& in) {
+  spec.load = [kit, binding, config_error](const cli::DomainInput& in) {
+    if (!config_error.empty()) throw runtime::domain::ConfigError(config_error);
     std::vector<std::string> warnings;
     auto scene = std::make_shared<const Scene>(load_input(in.inputs.at(0), in.flags.text("input-format"), warnings));
     for (const auto& w : warnings) std::cerr << "tabletop: warning: " << w << "\n";

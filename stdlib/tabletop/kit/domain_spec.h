@@ -20,8 +20,10 @@
 
 namespace ksmc::stdlib::tabletop::kit {
 
-// Reads and validates the configuration now (ConfigError naming file:line on anything the
-// kit does not implement); the returned spec loads the input when the binary runs.
+// Reads and validates the configuration now; the returned spec loads the input when the
+// binary runs. A ConfigError (naming file:line of the item the kit does not implement) is
+// raised by the spec's `load`, so the CLI reports it (exit code 1) instead of the process
+// terminating; read_kit_config() throws it directly.
 runtime::cli::DomainSpec domain_spec(const runtime::domain::DomainConfig& config,
                                      const runtime::domain::MlnBinding& binding);
 
