@@ -21,12 +21,12 @@ domain::DomainConfig make_config() {
   // domains/tabletop.ksm:36: model scene
   c.model.push_back({"pose", true, "object", "se3", true});
   c.model.push_back({"size", true, "object", "vec3", false});
-  // domains/tabletop.ksm:41: extract stable(o) = obb.stable(pose[o], size[o], tol = 3 deg);
-  c.extract.push_back({"stable", {"o"}, {"obb.stable", {{"pose", V::index("pose", {V::name("o")})}, {"size", V::index("size", {V::name("o")})}, {"tol", V::num(0.05235987755982989)}}, "domains/tabletop.ksm:41"}});
+  // domains/tabletop.ksm:41: extract stable(o) = obb.stable(pose[o], size[o], tol = 10 deg);
+  c.extract.push_back({"stable", {"o"}, {"obb.stable", {{"pose", V::index("pose", {V::name("o")})}, {"size", V::index("size", {V::name("o")})}, {"tol", V::num(0.17453292519943295)}}, "domains/tabletop.ksm:41"}});
   // domains/tabletop.ksm:42: extract contact(a, b) = obb.contact(pose[a], size[a], pose[b], size[b], eps = 4 mm);
   c.extract.push_back({"contact", {"a", "b"}, {"obb.contact", {{"pose_a", V::index("pose", {V::name("a")})}, {"size_a", V::index("size", {V::name("a")})}, {"pose_b", V::index("pose", {V::name("b")})}, {"size_b", V::index("size", {V::name("b")})}, {"eps", V::num(0.004)}}, "domains/tabletop.ksm:42"}});
-  // domains/tabletop.ksm:43: extract intersect(a, b) = obb.intersect(pose[a], size[a], pose[b], size[b], eps = 4 mm);
-  c.extract.push_back({"intersect", {"a", "b"}, {"obb.intersect", {{"pose_a", V::index("pose", {V::name("a")})}, {"size_a", V::index("size", {V::name("a")})}, {"pose_b", V::index("pose", {V::name("b")})}, {"size_b", V::index("size", {V::name("b")})}, {"eps", V::num(0.004)}}, "domains/tabletop.ksm:43"}});
+  // domains/tabletop.ksm:43: extract intersect(a, b) = obb.intersect(pose[a], size[a], pose[b], size[b], eps = 5 mm);
+  c.extract.push_back({"intersect", {"a", "b"}, {"obb.intersect", {{"pose_a", V::index("pose", {V::name("a")})}, {"size_a", V::index("size", {V::name("a")})}, {"pose_b", V::index("pose", {V::name("b")})}, {"size_b", V::index("size", {V::name("b")})}, {"eps", V::num(0.005)}}, "domains/tabletop.ksm:43"}});
   // domains/tabletop.ksm:44: extract higher(a, b) = obb.higher(pose[a], size[a], pose[b], size[b]);
   c.extract.push_back({"higher", {"a", "b"}, {"obb.higher", {{"pose_a", V::index("pose", {V::name("a")})}, {"size_a", V::index("size", {V::name("a")})}, {"pose_b", V::index("pose", {V::name("b")})}, {"size_b", V::index("size", {V::name("b")})}}, "domains/tabletop.ksm:44"}});
   // domains/tabletop.ksm:45: extract hover(o) = obb.hover(o, eps = 4 mm);
@@ -35,8 +35,8 @@ domain::DomainConfig make_config() {
   c.extract.push_back({"table", {"o"}, {"scene.is_table", {{"o", V::name("o")}}, "domains/tabletop.ksm:46"}});
   // domains/tabletop.ksm:48: prior mln;
   c.prior.push_back({{}, {}, {"mln", {}, "domains/tabletop.ksm:48"}});
-  // domains/tabletop.ksm:49: likelihood keypoints.gaussian(sigma = 1 px);
-  c.likelihood.push_back({"keypoints.gaussian", {{"sigma", V::num(1)}, {"robust", V::flag(false)}, {"outlier_px", V::num(20)}}, "domains/tabletop.ksm:49"});
+  // domains/tabletop.ksm:49: likelihood keypoints.gaussian(sigma = 1 px, robust = true, outlier_px = 5 px);
+  c.likelihood.push_back({"keypoints.gaussian", {{"sigma", V::num(1)}, {"robust", V::flag(true)}, {"outlier_px", V::num(5)}}, "domains/tabletop.ksm:49"});
   // domains/tabletop.ksm:52: kernel refine(o: object) reverse refine = pose.perturb(pose[o], sigma_t = 3 mm, sigma_r = 2 deg, candidates = 20);
   c.kernels.push_back({"refine", "refine", {{"o", "object"}}, {{"pose.perturb", {{"pose", V::index("pose", {V::name("o")})}, {"sigma_t", V::num(0.003)}, {"sigma_r", V::num(0.03490658503988659)}, {"candidates", V::num(20)}}, "domains/tabletop.ksm:52"}}, "domains/tabletop.ksm:52"});
   // domains/tabletop.ksm:54: schedule
