@@ -71,11 +71,10 @@ inline rd::DomainConfig indoor_config() {
   const std::vector<rd::Call> split_src = {
       call("detect.split_lines", {arg("min_votes", rd::Value::num(20)), arg("angle_tol", rd::Value::num(0.03490658503988659))}, 55),
       call("partner.inverse_distance", {}, 56)};
-  const std::vector<rd::Call> shrink_src = {call("move.unit_scale", {arg("sigma", rd::Value::num(0.05))}, 58),
-                                            call("move.wall_shift", {arg("sigma", rd::Value::num(2.0))}, 59)};
+  const std::vector<rd::Call> shrink_src = {call("move.wall_shift", {arg("sigma", rd::Value::num(2.0))}, 57)};
   const std::vector<rd::Call> door_src = {
-      call("detect.doors", {arg("min_width", rd::Value::num(0.6)), arg("max_width", rd::Value::num(2.0))}, 60)};
-  const std::vector<rd::Call> inter_src = {call("partner.inverse_distance", {}, 61)};
+      call("detect.doors", {arg("min_width", rd::Value::num(0.6)), arg("max_width", rd::Value::num(2.0))}, 58)};
+  const std::vector<rd::Call> inter_src = {call("partner.inverse_distance", {}, 59)};
   auto pair = [&](const std::string& a, const std::string& b, const std::vector<rd::Call>& src, int line) {
     const std::string where = "domains/indoor.ksm:" + std::to_string(line);
     c.kernels.push_back({a, b, {}, src, where});
@@ -84,8 +83,8 @@ inline rd::DomainConfig indoor_config() {
   pair("ADD", "REMOVE", add_src, 50);
   pair("SPLIT", "MERGE", split_src, 54);
   pair("SHRINK", "DILATE", shrink_src, 57);
-  pair("ALLOCATE", "DELETE", door_src, 60);
-  c.kernels.push_back({"INTERCHANGE", "INTERCHANGE", {}, inter_src, "domains/indoor.ksm:61"});
+  pair("ALLOCATE", "DELETE", door_src, 58);
+  c.kernels.push_back({"INTERCHANGE", "INTERCHANGE", {}, inter_src, "domains/indoor.ksm:59"});
 
   c.schedule.push_back({0, 1000, {{"ADD", 0.9}, {"REMOVE", 0.1}}});
   c.schedule.push_back({1000, 4000, {{"ADD", 0.05}, {"REMOVE", 0.15}, {"SPLIT", 0.15}, {"MERGE", 0.15},

@@ -124,9 +124,6 @@ void read_source(const dom::Call& c, SourceSettings& s) {
     s.split_angle_tol_rad = non_negative(c, "angle_tol");
   } else if (n == "partner.inverse_distance") {
     // The kernels' partner choice (MERGE, INTERCHANGE) is inverse-distance already.
-  } else if (n == "move.unit_scale") {
-    s.unit_scale = true;
-    s.unit_scale_sigma = positive(c, "sigma");
   } else if (n == "move.wall_shift") {
     s.wall_shift = true;
     s.wall_shift_sigma_cells = positive(c, "sigma");

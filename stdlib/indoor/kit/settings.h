@@ -48,8 +48,6 @@ struct SourceSettings {
   bool split = false;
   int split_min_votes = 20;
   double split_angle_tol_rad = 0.03490658503988659;
-  bool unit_scale = false;
-  double unit_scale_sigma = 0.05;
   bool wall_shift = false;
   double wall_shift_sigma_cells = 2.0;
   bool doors = false;

@@ -45,18 +45,18 @@ domain::DomainConfig make_config() {
   // domains/indoor.ksm:54: kernel pair SPLIT / MERGE = detect.split_lines(min_votes = 20), partner.inverse_distance();
   c.kernels.push_back({"SPLIT", "MERGE", {}, {{"detect.split_lines", {{"min_votes", V::num(20)}, {"angle_tol", V::num(0.03490658503988659)}}, "domains/indoor.ksm:55"}, {"partner.inverse_distance", {}, "domains/indoor.ksm:56"}}, "domains/indoor.ksm:54"});
   c.kernels.push_back({"MERGE", "SPLIT", {}, c.kernels.back().sources, "domains/indoor.ksm:54"});
-  // domains/indoor.ksm:57: kernel pair SHRINK / DILATE = move.unit_scale(sigma = 0.05), move.wall_shift(sigma = 2 cells);
-  c.kernels.push_back({"SHRINK", "DILATE", {}, {{"move.unit_scale", {{"sigma", V::num(0.05)}}, "domains/indoor.ksm:58"}, {"move.wall_shift", {{"sigma", V::num(2)}}, "domains/indoor.ksm:59"}}, "domains/indoor.ksm:57"});
+  // domains/indoor.ksm:57: kernel pair SHRINK / DILATE = move.wall_shift(sigma = 2 cells);
+  c.kernels.push_back({"SHRINK", "DILATE", {}, {{"move.wall_shift", {{"sigma", V::num(2)}}, "domains/indoor.ksm:57"}}, "domains/indoor.ksm:57"});
   c.kernels.push_back({"DILATE", "SHRINK", {}, c.kernels.back().sources, "domains/indoor.ksm:57"});
-  // domains/indoor.ksm:60: kernel pair ALLOCATE / DELETE = detect.doors(min_width = 0.6 m, max_width = 2 m);
-  c.kernels.push_back({"ALLOCATE", "DELETE", {}, {{"detect.doors", {{"min_width", V::num(0.6)}, {"max_width", V::num(2)}}, "domains/indoor.ksm:60"}}, "domains/indoor.ksm:60"});
-  c.kernels.push_back({"DELETE", "ALLOCATE", {}, c.kernels.back().sources, "domains/indoor.ksm:60"});
-  // domains/indoor.ksm:61: kernel INTERCHANGE reverse INTERCHANGE = partner.inverse_distance();
-  c.kernels.push_back({"INTERCHANGE", "INTERCHANGE", {}, {{"partner.inverse_distance", {}, "domains/indoor.ksm:61"}}, "domains/indoor.ksm:61"});
-  // domains/indoor.ksm:65: schedule
-  c.schedule.push_back({0, 1000, {{"ADD", 0.9}, {"REMOVE", 0.1}}});  // domains/indoor.ksm:66
-  c.schedule.push_back({1000, 4000, {{"ADD", 0.05}, {"REMOVE", 0.15}, {"SPLIT", 0.15}, {"MERGE", 0.15}, {"SHRINK", 0.2}, {"DILATE", 0.2}, {"INTERCHANGE", 0.1}}});  // domains/indoor.ksm:67
-  c.schedule.push_back({4000, kForever, {{"ADD", 0.05}, {"REMOVE", 0.1}, {"SPLIT", 0.1}, {"MERGE", 0.1}, {"SHRINK", 0.15}, {"DILATE", 0.15}, {"INTERCHANGE", 0.1}, {"ALLOCATE", 0.125}, {"DELETE", 0.125}}});  // domains/indoor.ksm:68
+  // domains/indoor.ksm:58: kernel pair ALLOCATE / DELETE = detect.doors(min_width = 0.6 m, max_width = 2 m);
+  c.kernels.push_back({"ALLOCATE", "DELETE", {}, {{"detect.doors", {{"min_width", V::num(0.6)}, {"max_width", V::num(2)}}, "domains/indoor.ksm:58"}}, "domains/indoor.ksm:58"});
+  c.kernels.push_back({"DELETE", "ALLOCATE", {}, c.kernels.back().sources, "domains/indoor.ksm:58"});
+  // domains/indoor.ksm:59: kernel INTERCHANGE reverse INTERCHANGE = partner.inverse_distance();
+  c.kernels.push_back({"INTERCHANGE", "INTERCHANGE", {}, {{"partner.inverse_distance", {}, "domains/indoor.ksm:59"}}, "domains/indoor.ksm:59"});
+  // domains/indoor.ksm:63: schedule
+  c.schedule.push_back({0, 1000, {{"ADD", 0.9}, {"REMOVE", 0.1}}});  // domains/indoor.ksm:64
+  c.schedule.push_back({1000, 4000, {{"ADD", 0.05}, {"REMOVE", 0.15}, {"SPLIT", 0.15}, {"MERGE", 0.15}, {"SHRINK", 0.2}, {"DILATE", 0.2}, {"INTERCHANGE", 0.1}}});  // domains/indoor.ksm:65
+  c.schedule.push_back({4000, kForever, {{"ADD", 0.05}, {"REMOVE", 0.1}, {"SPLIT", 0.1}, {"MERGE", 0.1}, {"SHRINK", 0.15}, {"DILATE", 0.15}, {"INTERCHANGE", 0.1}, {"ALLOCATE", 0.125}, {"DELETE", 0.125}}});  // domains/indoor.ksm:66
   return c;
 }
 
