@@ -7,6 +7,9 @@ set(KSMC_STDLIB_KSM
   ${PROJECT_SOURCE_DIR}/stdlib/core.ksm
   ${PROJECT_SOURCE_DIR}/stdlib/indoor.ksm
   ${PROJECT_SOURCE_DIR}/stdlib/tabletop.ksm)
+if(EXISTS ${PROJECT_SOURCE_DIR}/stdlib/segments.ksm)
+  list(APPEND KSMC_STDLIB_KSM ${PROJECT_SOURCE_DIR}/stdlib/segments.ksm)
+endif()
 
 function(ksmc_emit_factors)
   cmake_parse_arguments(E "" "DOMAIN;FILE;OUTPUT_DIR;SOURCES_VAR" "" ${ARGN})
