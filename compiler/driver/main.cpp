@@ -5,11 +5,14 @@
 #include <filesystem>
 #include <functional>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "compiler/ast/dump.h"
 #include "compiler/build/loader.h"
+#include "compiler/driver/build_command.h"
+#include "compiler/driver/install_layout.h"
 #include "compiler/driver/pipeline.h"
 #include "compiler/emit/emit_factors.h"
 #include "compiler/emit/emit_model.h"
@@ -34,8 +37,12 @@ struct Invocation {
   bool in_place = false;
   bool check_only = false;  // fmt --check
   bool dump_ir = false;
-  std::string out_dir;      // emit --out
+  std::string out_dir;      // emit --out, build -o
   infer::InferRequest infer;
+  std::string keep_dir;     // build --keep
+  bool verbose = false;     // build --verbose
+  int jobs = 0;             // build -j
+  std::filesystem::path executable;
 };
 
 struct Command {
@@ -205,6 +212,30 @@ int cmd_infer(Invocation& inv) {
   return infer::run_infer(ir, inv.infer, std::cout, std::cerr);
 }
 
+int cmd_build(Invocation& inv) {
+  if (inv.files.size() != 1 || inv.out_dir.empty()) {
+    std::cerr << "ksmc build: give one FILE and -o BIN\n";
+    return kExitUsage;
+  }
+  driver::BuildRequest request;
+  request.file = inv.files.front();
+  request.output = inv.out_dir;
+  request.keep_dir = inv.keep_dir;
+  request.verbose = inv.verbose;
+  request.jobs = inv.jobs;
+  request.load = inv.load;
+  request.executable = inv.executable;
+  return driver::run_build(request, std::cout, std::cerr);
+}
+
+int cmd_kit(Invocation& inv) {
+  if (inv.files.size() != 1) {
+    std::cerr << "ksmc kit: give one FILE\n";
+    return kExitUsage;
+  }
+  return driver::run_kit(inv.files.front(), inv.load, std::cout, std::cerr);
+}
+
 const std::vector<Command>& commands() {
   static const std::vector<Command> kCommands{
       {"check", "ksmc check [--dump-ast] [-I DIR] FILE...",
@@ -214,6 +245,10 @@ const std::vector<Command>& commands() {
        "write the generated C++ of FILE: DIR/<domain>_factors.{h,cpp}, <domain>_model.{h,cpp}, <domain>_main.cpp", cmd_emit},
       {"infer", "ksmc infer FILE --evidence E.db [--query p,q] [--method exact|gibbs|mcsat|map|auto] [--seed N]",
        "Markov logic inference without compiling: prints `pred(args) probability`, sorted", cmd_infer},
+      {"build", "ksmc build FILE -o BIN [-I DIR] [--keep DIR] [--verbose] [-j N]",
+       "compile FILE into the domain binary BIN against the installed ksmc (needs CMake and a C++20 compiler)",
+       cmd_build},
+      {"kit", "ksmc kit FILE", "print `<domain> <kit>`: FILE's domain name and the stdlib kit that runs it", cmd_kit},
   };
   return kCommands;
 }
@@ -232,6 +267,10 @@ void print_help(std::ostream& out) {
       << "  --check       fmt: exit 1 and name the files that are not formatted\n"
       << "  --dump-ir     print the lowered clause program\n"
       << "  --out DIR     emit: the output folder\n"
+      << "  -o BIN        build: the binary to write (atomically)\n"
+      << "  --keep DIR    build: work folder (generated C++, CMake project, build), kept and reused\n"
+      << "  --verbose     build: show the build commands and their output\n"
+      << "  -j N          build: parallel compile jobs (default: one per hardware thread)\n"
       << "  --evidence E  infer: the .db evidence file (ground atoms; `type = {A, B}` declares constants)\n"
       << "  --query LIST  infer: comma-separated query predicates to print (default: all)\n"
       << "  --method M    infer: exact, gibbs, mcsat, map or auto (default auto)\n"
@@ -260,7 +299,7 @@ int run(int argc, char** argv) {
     }
     // Options that take a value.
     static const std::vector<std::string> kValued{"--out", "-o", "--evidence", "--query", "--method",
-                                                  "--seed", "--samples", "--burn-in"};
+                                                  "--seed", "--samples", "--burn-in", "--keep", "-j"};
     if (std::find(kValued.begin(), kValued.end(), a) != kValued.end()) {
       if (i + 1 >= args.size()) {
         std::cerr << "ksmc: " << a << " needs a value\n";
@@ -274,6 +313,12 @@ int run(int argc, char** argv) {
         else if (a == "--seed") inv.infer.seed = std::stoull(v);
         else if (a == "--samples") inv.infer.samples = std::stoll(v);
         else if (a == "--burn-in") inv.infer.burn_in = std::stoll(v);
+        else if (a == "--keep") inv.keep_dir = v;
+        else if (a == "-j") {
+          std::size_t used = 0;
+          inv.jobs = std::stoi(v, &used);
+          if (used != v.size() || inv.jobs < 1) throw std::invalid_argument(v);
+        }
         else {  // --query
           std::size_t start = 0;
           while (start <= v.size()) {
@@ -283,7 +328,7 @@ int run(int argc, char** argv) {
           }
         }
       } catch (const std::exception&) {
-        std::cerr << "ksmc: " << a << ": '" << v << "' is not a number\n";
+        std::cerr << "ksmc: " << a << ": '" << v << "' is not a " << (a == "-j" ? "positive " : "") << "number\n";
         return kExitUsage;
       }
       continue;
@@ -296,6 +341,8 @@ int run(int argc, char** argv) {
       inv.in_place = true;
     } else if (a == "--check") {
       inv.check_only = true;
+    } else if (a == "--verbose") {
+      inv.verbose = true;
     } else if (a == "--list-passes") {
       list_passes = true;
     } else if (a == "-I") {
@@ -321,6 +368,10 @@ int run(int argc, char** argv) {
       inv.files.push_back(a);
     }
   }
+  // An installed ksmc (P/bin/ksmc) also searches P/share/ksmc, after the -I dirs, so
+  // `include "stdlib/x.ksm"` works anywhere. A build tree has no such folder.
+  inv.executable = driver::self_executable(argc > 0 ? argv[0] : nullptr);
+  if (const auto root = driver::installed_stdlib_root(inv.executable)) inv.load.include_dirs.push_back(root->string());
   if (list_passes) {
     for (const std::string& p : driver::pass_names()) std::cout << p << "\n";
     return kExitOk;
