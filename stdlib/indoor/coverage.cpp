@@ -127,6 +127,77 @@ void CoverageGrid::unit_rows(const UnitRaster* before, const UnitRaster* after, 
   }
 }
 
+inline void CoverageGrid::bump_classes(std::size_t idx, const std::array<int, kMaxLutClasses>& d_area, int d_wall) {
+  ++visited_;
+  CellCounts& c = cells_[idx];
+  const int k0 = c.key;
+  const int t0 = c.total;
+  int t = t0, bad = 0;
+  std::array<int, kMaxLutClasses> a{};
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    a[k] = c.area[k] + d_area[k];
+    t += d_area[k];
+    bad |= a[k];
+  }
+  const int w = c.wall + d_wall;
+  bad |= t | w;
+  if (bad < 0 || bad > 0xFFFF) [[unlikely]]
+    count_out_of_range();
+  for (std::size_t k = 0; k < a.size(); ++k) c.area[k] = static_cast<std::uint16_t>(a[k]);
+  c.total = static_cast<std::uint16_t>(t);
+  c.wall = static_cast<std::uint16_t>(w);
+  const int k1 = key_of(c);
+  if (k0 != k1) {
+    c.key = static_cast<std::uint8_t>(k1);
+    --hist_[static_cast<std::size_t>(k0)];
+    ++hist_[static_cast<std::size_t>(k1)];
+  }
+  overlap_ += std::max(t - 1, 0) - std::max(t0 - 1, 0);
+}
+
+void CoverageGrid::update_units(std::span<const Footprint> fs) {
+  if (fs.size() > kMaxJointFootprints)
+    throw std::invalid_argument("CoverageGrid::update_units: more than " + std::to_string(kMaxJointFootprints) +
+                                " footprints");
+  int r0 = rows_, r1 = 0;
+  for (const Footprint& f : fs) {
+    if (f.lut_class < 0 || f.lut_class >= kMaxLutClasses)
+      throw std::invalid_argument("CoverageGrid: lut class " + std::to_string(f.lut_class) + " out of range");
+    if (f.sign != 1 && f.sign != -1) throw std::invalid_argument("CoverageGrid::update_units: sign must be +1 or -1");
+    if (!f.raster || f.raster->outer.empty()) continue;
+    r0 = std::min(r0, f.raster->outer.row_begin());
+    r1 = std::max(r1, f.raster->outer.row_end());
+  }
+  r0 = std::max(r0, 0);
+  r1 = std::min(r1, rows_);
+  const std::size_t n = fs.size();
+  for (int row = r0; row < r1; ++row) {
+    RowSpan sp[2 * kMaxJointFootprints];
+    for (std::size_t i = 0; i < n; ++i)
+      if (fs[i].raster) {
+        sp[2 * i] = fs[i].raster->outer.span(row);
+        sp[2 * i + 1] = fs[i].raster->inner.span(row);
+      }
+    int bp[4 * kMaxJointFootprints];
+    const int m = breaks(sp, static_cast<int>(2 * n), bp);
+    const std::size_t base = index(row, 0);
+    for (int j = 0; j + 1 < m; ++j) {
+      const int x = bp[j];
+      std::array<int, kMaxLutClasses> da{};
+      int dw = 0;
+      bool any = false;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!in(sp[2 * i], x)) continue;
+        da[static_cast<std::size_t>(fs[i].lut_class)] += fs[i].sign;
+        if (!in(sp[2 * i + 1], x)) dw += fs[i].sign;
+      }
+      for (int v : da) any = any || v != 0;
+      if (!any && dw == 0) continue;
+      for (int c = bp[j]; c < bp[j + 1]; ++c) bump_classes(base + static_cast<std::size_t>(c), da, dw);
+    }
+  }
+}
+
 void CoverageGrid::door_rows(const SpanRaster* before, const SpanRaster* after) {
   int r0 = rows_, r1 = 0;
   for (const SpanRaster* s : {before, after}) {

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "stdlib/indoor/cell.h"
@@ -53,6 +54,16 @@ class CoverageGrid {
   void update_unit(const UnitRaster* before, int before_class, const UnitRaster* after,
                    int after_class);
   void update_door(const SpanRaster* before, const SpanRaster* after);
+  // Several footprints at once, each removed (sign -1) or added (sign +1): the net count
+  // change is applied in one sweep, so only cells whose counts change in total are visited
+  // (a split or merge costs the cells of the cut walls, not the units' areas).
+  struct Footprint {
+    const UnitRaster* raster = nullptr;
+    int lut_class = 0;
+    int sign = 1;
+  };
+  static constexpr std::size_t kMaxJointFootprints = 8;
+  void update_units(std::span<const Footprint> fs);  // at most kMaxJointFootprints
 
   const Histogram& histogram() const { return hist_; }
   // Cells visited by updates so far (each visit changes that cell's counts).
@@ -62,7 +73,8 @@ class CoverageGrid {
 
   Cell observed(int row, int col) const { return static_cast<Cell>(cells_[index(row, col)].observed); }
   const CellCounts& counts(int row, int col) const { return cells_[index(row, col)]; }
-  Predicted predicted(int row, int col) const { return predicted_class(counts(row, col)); }
+  // The predicted class is the last digit of the cell's histogram index (= predicted_class()).
+  Predicted predicted(int row, int col) const { return static_cast<Predicted>(cells_[index(row, col)].key % 3); }
 
  private:
   std::size_t index(int row, int col) const {
@@ -72,6 +84,7 @@ class CoverageGrid {
   void unit_rows(const UnitRaster* before, const UnitRaster* after, int lut_class);
   void door_rows(const SpanRaster* before, const SpanRaster* after);
   void bump(std::size_t idx, int lut_class, int d_area, int d_wall, int d_door);
+  void bump_classes(std::size_t idx, const std::array<int, kMaxLutClasses>& d_area, int d_wall);
 
   int rows_ = 0, cols_ = 0;
   std::vector<CellCounts> cells_;

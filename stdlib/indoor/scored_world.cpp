@@ -1,6 +1,7 @@
 #include "stdlib/indoor/scored_world.h"
 
 #include <algorithm>
+#include <array>
 
 namespace ksmc::stdlib::indoor {
 
@@ -29,12 +30,33 @@ void ScoredWorld::apply(const Move& m) {
   }
   const std::int64_t theta_before = misaligned_pairs_involving(world_, ids, params_.prior);
   World next = world_.applied(m);  // throws before anything changes when the move misfits
-  for (const auto& c : m.units) {
-    UnitRaster b, a;
-    if (c.before) b = unit_raster(*c.before);
-    if (c.after) a = unit_raster(*c.after);
-    grid_.update_unit(c.before ? &b : nullptr, c.before ? c.before->lut_class : 0,
-                      c.after ? &a : nullptr, c.after ? c.after->lut_class : 0);
+  if (2 * m.units.size() <= CoverageGrid::kMaxJointFootprints) {
+    // One sweep over all footprints: cells whose counts do not change in total (the shared
+    // area of a split or merge) are not visited.
+    std::array<UnitRaster, CoverageGrid::kMaxJointFootprints> rs;
+    std::array<CoverageGrid::Footprint, CoverageGrid::kMaxJointFootprints> fs;
+    std::size_t n = 0;
+    for (const auto& c : m.units) {
+      if (c.before) {
+        rs[n] = unit_raster(*c.before);
+        fs[n] = {&rs[n], c.before->lut_class, -1};
+        ++n;
+      }
+      if (c.after) {
+        rs[n] = unit_raster(*c.after);
+        fs[n] = {&rs[n], c.after->lut_class, +1};
+        ++n;
+      }
+    }
+    grid_.update_units(std::span<const CoverageGrid::Footprint>(fs.data(), n));
+  } else {
+    for (const auto& c : m.units) {
+      UnitRaster b, a;
+      if (c.before) b = unit_raster(*c.before);
+      if (c.after) a = unit_raster(*c.after);
+      grid_.update_unit(c.before ? &b : nullptr, c.before ? c.before->lut_class : 0,
+                        c.after ? &a : nullptr, c.after ? c.after->lut_class : 0);
+    }
   }
   for (const auto& c : m.doors) {
     SpanRaster b, a;

@@ -214,6 +214,13 @@ TEST_CASE("incremental likelihood and weak prior match full recomputation over 1
   CHECK(max_overlap > 0);
   CHECK(max_theta > 0);
   CHECK(sw.log_likelihood() != empty_ll);
+  // The grid's predicted class (read from the cached histogram index) equals the
+  // classification of the cell's counts.
+  int mismatched = 0;
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c)
+      mismatched += sw.coverage().predicted(r, c) != predicted_class(sw.coverage().counts(r, c));
+  CHECK(mismatched == 0);
 }
 
 TEST_CASE("abutting units share no cell and a full rescore equals the incremental state",

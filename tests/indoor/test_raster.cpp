@@ -78,6 +78,41 @@ TEST_CASE("a wall shift visits only the cells it changes", "[indoor][raster]") {
   CHECK(sw.log_likelihood() == Approx(sw.recompute_log_likelihood()).epsilon(1e-12));
 }
 
+TEST_CASE("a split or merge visits only the cells of the cut walls", "[indoor][raster]") {
+  ScoreParams p;
+  p.raster.wall_thickness = 1.0;
+  ScoredWorld sw(ClassGrid(200, 300, std::uint8_t{0}), p);
+  Unit a;
+  a.id = 1;
+  a.rect = OrientedRect{150, 100, 200, 120, 0.0};  // columns 50..249, rows 40..159
+  sw.apply(Move{KernelKind::Add, {{1, std::nullopt, a}}, {}, {}});
+  Unit l = a, r = a;
+  l.id = 2;
+  l.rect = OrientedRect{100, 100, 100, 120, 0.0};  // columns 50..149
+  r.id = 3;
+  r.rect = OrientedRect{200, 100, 100, 120, 0.0};  // columns 150..249
+  const Move split{KernelKind::Split, {{1, a, std::nullopt}, {2, std::nullopt, l}, {3, std::nullopt, r}}, {}, {}};
+  auto before = sw.coverage().cells_visited();
+  sw.apply(split);
+  // Columns 149 and 150 become wall on the 118 interior rows; nothing else changes.
+  CHECK(sw.coverage().cells_visited() - before == 2u * 118u);
+  CHECK(sw.log_likelihood() == Approx(sw.recompute_log_likelihood()).epsilon(1e-12));
+  CHECK(sw.log_prior() == Approx(sw.recompute_log_prior()).epsilon(1e-12));
+  before = sw.coverage().cells_visited();
+  const double ll = sw.log_likelihood();
+  sw.revert(split);  // the merge
+  CHECK(sw.coverage().cells_visited() - before == 2u * 118u);
+  CHECK(sw.log_likelihood() == Approx(sw.recompute_log_likelihood()).epsilon(1e-12));
+  CHECK(sw.log_likelihood() != ll);
+  // A change of likelihood class still visits the whole area (the counts move between classes).
+  Unit b = a;
+  b.lut_class = 1;
+  before = sw.coverage().cells_visited();
+  sw.apply(Move{KernelKind::Add, {{1, a, b}}, {}, {}});
+  CHECK(sw.coverage().cells_visited() - before == 200u * 120u);
+  CHECK(sw.log_likelihood() == Approx(sw.recompute_log_likelihood()).epsilon(1e-12));
+}
+
 TEST_CASE("rendered prediction follows the cell classes", "[indoor][raster]") {
   ScoreParams p;
   p.raster.wall_thickness = 1.0;

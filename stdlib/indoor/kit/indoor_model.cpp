@@ -25,7 +25,17 @@ std::optional<KernelKind> kernel_kind(const std::string& n) {
   return std::nullopt;
 }
 
-IndoorModel::IndoorModel(std::shared_ptr<const SharedInput> in) : in_(std::move(in)), sw_(in_->grid, in_->score) {
+namespace {
+detect::DoorParams door_params(const SharedInput& in) {
+  detect::DoorParams dp;
+  dp.min_door = in.settings.sources.door_min_width_m / in.resolution;
+  dp.max_door = in.settings.sources.door_max_width_m / in.resolution;
+  return dp;
+}
+}  // namespace
+
+IndoorModel::IndoorModel(std::shared_ptr<const SharedInput> in)
+    : in_(std::move(in)), sw_(in_->grid, in_->score), door_cache_(door_params(*in_)) {
   units_ = in_->fixed_units;
   KernelSources src;
   src.units = [this](const World&) { return std::span<const CandidateUnit>(units_); };
@@ -71,10 +81,7 @@ void IndoorModel::refresh_sources() {
   if (s.doors) {
     std::vector<OrientedRect> rects;
     for (const Unit& u : w.units()) rects.push_back(u.rect);
-    detect::DoorParams dp;
-    dp.min_door = s.door_min_width_m / in_->resolution;
-    dp.max_door = s.door_max_width_m / in_->resolution;
-    doors_ = rects.size() < 2 ? std::vector<CandidateDoor>{} : to_door_candidates(detect::detect_doors(in_->grid, rects, dp));
+    doors_ = door_cache_.candidates(in_->grid, rects);  // = detect_doors on all units, per pair cached
   }
 }
 

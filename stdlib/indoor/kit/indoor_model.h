@@ -20,6 +20,7 @@
 
 #include "runtime/mcmc/model.h"
 #include "stdlib/indoor/kernels.h"
+#include "stdlib/indoor/kit/door_cache.h"
 #include "stdlib/indoor/kit/semantics.h"
 #include "stdlib/indoor/kit/settings.h"
 #include "stdlib/indoor/scored_world.h"
@@ -91,6 +92,7 @@ class IndoorModel final : public runtime::mcmc::Model {
   // Sources.
   std::vector<CandidateUnit> units_;
   std::vector<CandidateDoor> doors_;
+  DoorCandidateCache door_cache_;
   std::map<std::tuple<double, double, double, double, double>, std::vector<CandidateLine>> splits_;
   // Semantic state.
   std::vector<std::pair<UnitId, UnitId>> sale_pairs_;
