@@ -131,7 +131,14 @@ endif()
 
 # Exported names drop the ksmc_ prefix (ksmc_runtime_cli -> ksmc::runtime_cli, as the
 # aliases in the build); consumers compile as C++20 and find the headers under include/ksmc.
-# Headers: those in the folders of each installed library's sources.
+# Headers: those in the folders of each installed library's sources, and the umbrella
+# headers directly in runtime/ and stdlib/ (runtime/ksmc_runtime.h).
+foreach(top runtime stdlib)
+  file(GLOB headers CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${top}/*.h)
+  if(headers)
+    install(FILES ${headers} DESTINATION ${KSMC_INSTALL_INCLUDEDIR}/${top} COMPONENT ksmc)
+  endif()
+endforeach()
 set(_ksmc_header_dirs "")
 foreach(target ${KSMC_INSTALL_TARGETS})
   string(REGEX REPLACE "^ksmc_" "" export_name ${target})

@@ -107,6 +107,8 @@ std::string project_text(const EmittedDomain& d, const fs::path& prefix, const s
   o << "# Written by `ksmc build` for " << file << " (rewritten on every run).\n"
     << "cmake_minimum_required(VERSION 3.22)\n"
     << "project(ksmc_build_" << n << " LANGUAGES CXX)\n"
+    << "set(CMAKE_CXX_EXTENSIONS OFF)\n"
+    << "set(CMAKE_CXX_FLAGS_RELEASE \"-O2 -DNDEBUG\")  # as the ksmc build (RelWithDebInfo without -g)\n"
     << "find_package(ksmc " << KSMC_VERSION << " EXACT REQUIRED CONFIG PATHS " << cmake_quote(prefix.string())
     << " NO_DEFAULT_PATH)\n"
     << "add_executable(" << n << " src/" << n << "_factors.cpp src/" << n << "_model.cpp src/" << n << "_main.cpp)\n"
@@ -293,11 +295,14 @@ int run_build(const BuildRequest& request, std::ostream& out, std::ostream& err)
       return kErrors;
     }
     if (r.exit_code != 0) {
+      std::string text;
+      if (!request.verbose) read_text(log, text);
       err << "ksmc build: " << step_names[i] << " " << request.file << " failed (exit " << r.exit_code << ")";
-      if (i == 0) err << "; is a C++20 compiler installed? (CXX selects one)";
+      if (i == 0 && (request.verbose || text.find("CMAKE_CXX_COMPILER") != std::string::npos ||
+                     text.find("is not able to compile") != std::string::npos)) {
+        err << "; is a C++20 compiler installed? (CXX selects one)";
+      }
       if (!request.verbose) {
-        std::string text;
-        read_text(log, text);
         err << "; build output:\n" << text;
         if (!text.empty() && text.back() != '\n') err << "\n";
       } else {
