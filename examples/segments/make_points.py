@@ -58,7 +58,7 @@ def main():
     truth = {
         "segments": [[a[0], a[1], b[0], b[1]] for a, b in walls()],
         "corners": CORNERS,
-        "tolerances": {"distance_m": 0.08, "angle_deg": 5.0, "max_spurious": 3},
+        "tolerances": {"distance_m": 0.15, "angle_deg": 5.0, "max_spurious": 3},
     }
     with open(os.path.join(args.out, "room_truth.json"), "w") as f:
         json.dump(truth, f, indent=1)

@@ -75,7 +75,7 @@ std::vector<double> death_probabilities(const Scene& scene, const DeathParams& p
 
 std::vector<SplitOption> split_options(const std::vector<Vec2>& points, const Segment& s, const SplitParams& p) {
   const double len = s.length();
-  const int bins = std::max(2, static_cast<int>(std::floor(len / p.bin)));
+  const int bins = std::max(2, static_cast<int>(std::floor(len / p.bin + 1e-9)));
   std::vector<int> count(static_cast<std::size_t>(bins), 0);
   if (len > 0.0)
     for (const Vec2& q : points) {

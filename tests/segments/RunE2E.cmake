@@ -1,0 +1,26 @@
+# cmake -DBIN=segments -DCHECK=segments_check -DINPUT=room.txt -DTRUTH=room_truth.json -DOUT=dir -P RunE2E.cmake
+# Runs the segments binary twice with the same seed (the outputs must be identical), then
+# checks segments.json against the ground truth.
+foreach(run a b)
+  file(REMOVE_RECURSE "${OUT}/${run}")
+  execute_process(COMMAND "${BIN}" "${INPUT}" --out "${OUT}/${run}" --seed 3 --iterations 20000 --quiet
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE o ERROR_VARIABLE e)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "segments failed (${rc}):\n${o}${e}")
+  endif()
+  foreach(f segments.json overlay.png summary.json best_state.json)
+    if(NOT EXISTS "${OUT}/${run}/${f}")
+      message(FATAL_ERROR "missing output ${OUT}/${run}/${f}")
+    endif()
+  endforeach()
+endforeach()
+file(READ "${OUT}/a/best_state.json" sa)
+file(READ "${OUT}/b/best_state.json" sb)
+if(NOT sa STREQUAL sb)
+  message(FATAL_ERROR "same input and seed gave different best states")
+endif()
+execute_process(COMMAND "${CHECK}" "${OUT}/a/segments.json" "${TRUTH}" RESULT_VARIABLE rc OUTPUT_VARIABLE o ERROR_VARIABLE e)
+message("${o}${e}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the fitted segments do not match the ground truth")
+endif()
