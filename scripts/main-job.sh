@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job on the bundled examples: check both domain files, show their lowered
 # knowledge bases, then (where the domain binaries are built) map the bundled simulated
-# floor plan and analyse the bundled table-top scene. Prints where pictures and JSON went.
+# floor plan, analyse the bundled table-top scene and fit line segments to the bundled 2D
+# point cloud (examples/segments). Prints where pictures and JSON went.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR="${KSMC_BUILD_DIR:-build}"
@@ -29,4 +30,12 @@ if [ -x "$BIN/tabletop" ]; then
   echo "tabletop results: $OUT_DIR/tabletop/scene_graph.json, graph.png, overlay.png, summary.json"
 else
   echo "== tabletop: bin/tabletop is not built in this checkout (no stdlib kit); skipped"
+fi
+if [ -x "$BIN/segments" ]; then
+  echo "== segments: examples/segments/room.txt (domain written only in examples/segments/segments.ksm)"
+  "$BIN/ksmc" check examples/segments/segments.ksm
+  "$BIN/segments" examples/segments/room.txt --out "$OUT_DIR/segments" --seed 1
+  echo "segments results: $OUT_DIR/segments/segments.json, overlay.png, summary.json"
+else
+  echo "== segments: bin/segments is not built in this checkout (no stdlib kit); skipped"
 fi
