@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "kit_fixture.h"
 #include "runtime/mcmc/rng.h"
@@ -142,4 +143,46 @@ TEST_CASE("JITTER is its own reverse with a symmetric density", "[segments][kern
     m.reject();
     CHECK(m.snapshot() == ids_before);
   }
+}
+
+namespace {
+
+// The discrete moves (DEATH: which line; MERGE: which pair) are drawn with the probability
+// they report: empirical frequencies over many proposals match exp(log_q_fwd) (5 sigma).
+void check_discrete_honesty(Fn move) {
+  const auto sh = segments_test::room_input();
+  SegmentsModel m(sh);
+  m.restore(start_state(sh));
+  Rng rng(31);
+  const int draws = 20000;
+  std::map<std::vector<std::array<double, 4>>, std::pair<int, double>> seen;
+  for (int i = 0; i < draws; ++i) {
+    const Proposal p = move(m, rng);
+    REQUIRE_FALSE(p.was_declined());
+    auto& e = seen[as_set(m)];
+    if (e.first > 0) REQUIRE(e.second == Approx(p.log_q_fwd).epsilon(1e-12));
+    ++e.first;
+    e.second = p.log_q_fwd;
+    m.reject();
+  }
+  double total = 0.0;
+  for (const auto& [state, e] : seen) {
+    const double q = std::exp(e.second);
+    total += q;
+    const double sd = std::sqrt(q * (1.0 - q) / draws);
+    CHECK(std::abs(static_cast<double>(e.first) / draws - q) <= 5.0 * sd + 1e-3);
+  }
+  // Q sums to at most one; outcomes never drawn carry little mass.
+  CHECK(total <= 1.0 + 1e-9);
+  CHECK(1.0 - total < 10.0 / draws);
+}
+
+}  // namespace
+
+TEST_CASE("DEATH draws lines with the probability it reports", "[segments][kernels]") {
+  check_discrete_honesty(propose_death);
+}
+
+TEST_CASE("MERGE draws pairs with the probability it reports", "[segments][kernels]") {
+  check_discrete_honesty(propose_merge);
 }
