@@ -43,16 +43,16 @@ domain::DomainConfig make_config() {
   // examples/segments/segments.ksm:55: likelihood points.gaussian(sigma = 2 cm, background = 0.01);
   c.likelihood.push_back({"points.gaussian", {{"sigma", V::num(0.02)}, {"background", V::num(0.01)}}, "examples/segments/segments.ksm:55"});
   // examples/segments/segments.ksm:57: kernel pair BIRTH / DEATH = detect.ransac(min_inliers = 8, inlier_dist = 3 cm), support.poor(explain = 5 cm);
-  c.kernels.push_back({"BIRTH", "DEATH", {}, {{"detect.ransac", {{"min_inliers", V::num(8)}, {"inlier_dist", V::num(0.03)}, {"candidates", V::num(300)}, {"max_gap", V::num(0.3)}, {"jitter", V::num(0.02)}, {"power", V::num(2)}}, "examples/segments/segments.ksm:57"}, {"support.poor", {{"explain", V::num(0.05)}}, "examples/segments/segments.ksm:57"}}, "examples/segments/segments.ksm:57"});
+  c.kernels.push_back({"BIRTH", "DEATH", {}, {{"detect.ransac", {{"min_inliers", V::num(8)}, {"inlier_dist", V::num(0.03)}, {"candidates", V::num(300)}, {"max_gap", V::num(0.3)}, {"jitter", V::num(0.02)}, {"power", V::num(2)}}, "examples/segments/segments.ksm:58"}, {"support.poor", {{"explain", V::num(0.05)}}, "examples/segments/segments.ksm:59"}}, "examples/segments/segments.ksm:57"});
   c.kernels.push_back({"DEATH", "BIRTH", {}, c.kernels.back().sources, "examples/segments/segments.ksm:57"});
-  // examples/segments/segments.ksm:58: kernel pair SPLIT / MERGE = detect.gaps(bin = 10 cm), partner.inverse_gap(eps = 5 cm);
-  c.kernels.push_back({"SPLIT", "MERGE", {}, {{"detect.gaps", {{"bin", V::num(0.1)}, {"gap_weight", V::num(20)}, {"jitter", V::num(0.02)}, {"near", V::num(0.05)}}, "examples/segments/segments.ksm:58"}, {"partner.inverse_gap", {{"eps", V::num(0.05)}, {"angle_scale", V::num(0.17453292519943295)}}, "examples/segments/segments.ksm:58"}}, "examples/segments/segments.ksm:58"});
-  c.kernels.push_back({"MERGE", "SPLIT", {}, c.kernels.back().sources, "examples/segments/segments.ksm:58"});
-  // examples/segments/segments.ksm:59: kernel JITTER reverse JITTER = move.endpoint_jitter(sigma = 2 cm);
-  c.kernels.push_back({"JITTER", "JITTER", {}, {{"move.endpoint_jitter", {{"sigma", V::num(0.02)}, {"shift_prob", V::num(0.2)}, {"slide", V::num(0.05)}, {"slide_prob", V::num(0.4)}}, "examples/segments/segments.ksm:59"}}, "examples/segments/segments.ksm:59"});
-  // examples/segments/segments.ksm:62: schedule
-  c.schedule.push_back({0, 500, {{"BIRTH", 0.6}, {"DEATH", 0.1}, {"JITTER", 0.3}}});  // examples/segments/segments.ksm:63
-  c.schedule.push_back({500, kForever, {{"BIRTH", 0.1}, {"DEATH", 0.1}, {"SPLIT", 0.1}, {"MERGE", 0.1}, {"JITTER", 0.6}}});  // examples/segments/segments.ksm:64
+  // examples/segments/segments.ksm:60: kernel pair SPLIT / MERGE = detect.gaps(bin = 10 cm), partner.inverse_gap(eps = 5 cm);
+  c.kernels.push_back({"SPLIT", "MERGE", {}, {{"detect.gaps", {{"bin", V::num(0.1)}, {"gap_weight", V::num(20)}, {"jitter", V::num(0.02)}, {"near", V::num(0.05)}}, "examples/segments/segments.ksm:61"}, {"partner.inverse_gap", {{"eps", V::num(0.05)}, {"angle_scale", V::num(0.17453292519943295)}}, "examples/segments/segments.ksm:62"}}, "examples/segments/segments.ksm:60"});
+  c.kernels.push_back({"MERGE", "SPLIT", {}, c.kernels.back().sources, "examples/segments/segments.ksm:60"});
+  // examples/segments/segments.ksm:63: kernel JITTER reverse JITTER = move.endpoint_jitter(sigma = 2 cm);
+  c.kernels.push_back({"JITTER", "JITTER", {}, {{"move.endpoint_jitter", {{"sigma", V::num(0.02)}, {"shift_prob", V::num(0.2)}, {"slide", V::num(0.05)}, {"slide_prob", V::num(0.4)}}, "examples/segments/segments.ksm:63"}}, "examples/segments/segments.ksm:63"});
+  // examples/segments/segments.ksm:66: schedule
+  c.schedule.push_back({0, 500, {{"BIRTH", 0.6}, {"DEATH", 0.1}, {"JITTER", 0.3}}});  // examples/segments/segments.ksm:67
+  c.schedule.push_back({500, kForever, {{"BIRTH", 0.1}, {"DEATH", 0.1}, {"SPLIT", 0.1}, {"MERGE", 0.1}, {"JITTER", 0.6}}});  // examples/segments/segments.ksm:68
   return c;
 }
 
