@@ -155,7 +155,8 @@ inline void CoverageGrid::bump_classes(std::size_t idx, const std::array<int, kM
   overlap_ += std::max(t - 1, 0) - std::max(t0 - 1, 0);
 }
 
-void CoverageGrid::update_units(std::span<const Footprint> fs) {
+template <class PerCell>
+void CoverageGrid::sweep_units(std::span<const Footprint> fs, PerCell&& per_cell) const {
   if (fs.size() > kMaxJointFootprints)
     throw std::invalid_argument("CoverageGrid::update_units: more than " + std::to_string(kMaxJointFootprints) +
                                 " footprints");
@@ -193,9 +194,42 @@ void CoverageGrid::update_units(std::span<const Footprint> fs) {
       }
       for (int v : da) any = any || v != 0;
       if (!any && dw == 0) continue;
-      for (int c = bp[j]; c < bp[j + 1]; ++c) bump_classes(base + static_cast<std::size_t>(c), da, dw);
+      for (int c = bp[j]; c < bp[j + 1]; ++c) per_cell(base + static_cast<std::size_t>(c), da, dw);
     }
   }
+}
+
+void CoverageGrid::update_units(std::span<const Footprint> fs) {
+  sweep_units(fs, [this](std::size_t idx, const std::array<int, kMaxLutClasses>& da, int dw) { bump_classes(idx, da, dw); });
+}
+
+CoverageGrid::Delta CoverageGrid::preview_units(std::span<const Footprint> fs) const {
+  Delta d;
+  sweep_units(fs, [this, &d](std::size_t idx, const std::array<int, kMaxLutClasses>& da, int dw) {
+    CellCounts c = cells_[idx];
+    const int k0 = c.key;
+    const int t0 = c.total;
+    int t = t0, bad = 0;
+    for (std::size_t k = 0; k < da.size(); ++k) {
+      const int a = c.area[k] + da[k];
+      t += da[k];
+      bad |= a;
+      c.area[k] = static_cast<std::uint16_t>(a);
+    }
+    const int w = c.wall + dw;
+    bad |= t | w;
+    if (bad < 0 || bad > 0xFFFF) [[unlikely]]
+      count_out_of_range();
+    c.total = static_cast<std::uint16_t>(t);
+    c.wall = static_cast<std::uint16_t>(w);
+    const int k1 = key_of(c);
+    if (k0 != k1) {
+      --d.hist[static_cast<std::size_t>(k0)];
+      ++d.hist[static_cast<std::size_t>(k1)];
+    }
+    d.overlap += std::max(t - 1, 0) - std::max(t0 - 1, 0);
+  });
+  return d;
 }
 
 void CoverageGrid::door_rows(const SpanRaster* before, const SpanRaster* after) {

@@ -64,6 +64,13 @@ class CoverageGrid {
   };
   static constexpr std::size_t kMaxJointFootprints = 8;
   void update_units(std::span<const Footprint> fs);  // at most kMaxJointFootprints
+  // What update_units(fs) would change, without changing anything: histogram and overlap
+  // deltas (throws like update_units if a count would leave its range).
+  struct Delta {
+    Histogram hist{};
+    std::int64_t overlap = 0;
+  };
+  Delta preview_units(std::span<const Footprint> fs) const;
 
   const Histogram& histogram() const { return hist_; }
   // Cells visited by updates so far (each visit changes that cell's counts).
@@ -84,6 +91,8 @@ class CoverageGrid {
   void unit_rows(const UnitRaster* before, const UnitRaster* after, int lut_class);
   void door_rows(const SpanRaster* before, const SpanRaster* after);
   void bump(std::size_t idx, int lut_class, int d_area, int d_wall, int d_door);
+  template <class PerCell>
+  void sweep_units(std::span<const Footprint> fs, PerCell&& per_cell) const;
   void bump_classes(std::size_t idx, const std::array<int, kMaxLutClasses>& d_area, int d_wall);
 
   int rows_ = 0, cols_ = 0;

@@ -280,3 +280,51 @@ TEST_CASE("bad inputs are reported, not crashed on", "[indoor][score]") {
                     Catch::Contains("differs from the move's 'before'"));
   CHECK(sw.log_likelihood() == ll2);
 }
+
+TEST_CASE("a preview scores a move like apply, commit equals apply and discard restores bit for bit",
+          "[indoor][score]") {
+  const int rows = 90, cols = 120;
+  const ClassGrid map = draw_plan(rows, cols, {{5, 5, 50, 40}, {50, 5, 110, 40}, {5, 40, 110, 55}, {20, 55, 70, 85}},
+                                  2, {{50, 20}, {30, 40}});
+  ScoredWorld sw(map, test_params()), ref(map, test_params());
+  RandomMoves gen(rows, cols, 7);
+  int previewed = 0, committed = 0, discarded = 0, not_previewable = 0;
+  for (int i = 0; i < 20000; ++i) {
+    auto m = gen.next(sw.world());
+    if (!m) continue;
+    if (sw.world().units().size() > 25) continue;
+    const double ll0 = sw.log_likelihood(), lp0 = sw.log_prior();
+    if (!sw.preview(*m)) {
+      ++not_previewable;
+      CHECK_FALSE(sw.previewing());
+      sw.apply(*m);
+      ref.apply(*m);
+      continue;
+    }
+    ++previewed;
+    ref.apply(*m);
+    // The preview reads exactly as the applied move.
+    REQUIRE(sw.log_likelihood() == ref.log_likelihood());
+    REQUIRE(sw.log_prior() == ref.log_prior());
+    REQUIRE(sw.world().units().size() == ref.world().units().size());
+    CHECK_THROWS_AS(sw.apply(*m), std::logic_error);
+    if (gen.pick(2) == 0) {
+      sw.discard();
+      ref.revert(*m);
+      ++discarded;
+      REQUIRE(sw.log_likelihood() == ll0);
+      REQUIRE(sw.log_prior() == lp0);
+    } else {
+      sw.commit();
+      ++committed;
+      REQUIRE(sw.log_likelihood() == ref.log_likelihood());
+      REQUIRE(sw.log_prior() == ref.log_prior());
+    }
+    if (i % 200 == 0) REQUIRE(close_rel(sw.log_likelihood(), sw.recompute_log_likelihood(), 1e-9));
+  }
+  CHECK(previewed > 2000);
+  CHECK(committed > 1000);
+  CHECK(discarded > 1000);
+  CHECK(not_previewable > 100);  // door moves and large moves take the apply path
+  CHECK_THROWS_AS(sw.commit(), std::logic_error);
+}

@@ -139,7 +139,8 @@ bool IndoorModel::propose(KernelKind k, mcmc::Rng& rng, double& log_q_fwd, doubl
     // world W; its own change of log p(W) is reported in log_q_fwd so that the engine's
     // acceptance ratio compares M' with M under the refreshed target.
     const double before = log_posterior();
-    const SemanticResult r = sem_->evaluate(sw_.world());
+    if (!due_result_) due_result_ = sem_->evaluate(sw_.world());
+    const SemanticResult& r = *due_result_;
     auto changes = relabel(r);
     if (!changes.empty()) {
       Move m;
@@ -163,7 +164,9 @@ bool IndoorModel::propose(KernelKind k, mcmc::Rng& rng, double& log_q_fwd, doubl
     offset_ = pend.old_offset;
     return false;
   }
-  sw_.apply(p->move);
+  // Previewed when possible: a rejection then costs no revert (see ScoredWorld::preview).
+  pend.previewed = sw_.preview(p->move);
+  if (!pend.previewed) sw_.apply(p->move);
   pend.move = std::move(p->move);
   if (!sale_pairs_.empty()) sale_log_prior_ = sale_log_prior(sw_.world());
   log_q_fwd = p->log_q_fwd;
@@ -174,12 +177,15 @@ bool IndoorModel::propose(KernelKind k, mcmc::Rng& rng, double& log_q_fwd, doubl
 
 void IndoorModel::accept() {
   if (pending_ && pending_->refresh) semantic_due_ = false;
+  due_result_.reset();  // the world changed (or the refresh is done)
+  if (pending_ && pending_->previewed) sw_.commit();
   pending_.reset();
 }
 
 void IndoorModel::reject() {
   if (!pending_) return;
-  if (pending_->move) sw_.revert(*pending_->move);
+  if (pending_->previewed) sw_.discard();
+  else if (pending_->move) sw_.revert(*pending_->move);
   if (pending_->relabel) sw_.revert(*pending_->relabel);
   sale_pairs_ = std::move(pending_->old_pairs);
   sale_log_prior_ = pending_->old_sale;
@@ -238,6 +244,7 @@ void IndoorModel::restore(const mcmc::Snapshot& s) {
     throw std::invalid_argument(std::string("indoor state snapshot: ") + e.what());
   }
   sale_log_prior_ = sale_log_prior(sw_.world());
+  due_result_.reset();
   pending_.reset();
 }
 

@@ -89,6 +89,9 @@ class IndoorModel final : public runtime::mcmc::Model {
   bool krng_seeded_ = false;
   std::uint64_t iteration_ = 0;
   bool semantic_due_ = false;
+  // The due refresh's inference on the current world: a rejected or declined proposal leaves
+  // the world as it was, so the retry reuses it (cleared when a proposal is accepted).
+  std::optional<SemanticResult> due_result_;
   // Sources.
   std::vector<CandidateUnit> units_;
   std::vector<CandidateDoor> doors_;
@@ -105,6 +108,7 @@ class IndoorModel final : public runtime::mcmc::Model {
     double old_sale = 0.0;
     double old_offset = 0.0;
     bool refresh = false;
+    bool previewed = false;  // `move` is an open ScoredWorld preview (commit on accept)
   };
   std::optional<Pending> pending_;
 };
