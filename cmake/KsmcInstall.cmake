@@ -67,6 +67,9 @@ function(_ksmc_collect target)
   endif()
   foreach(item ${links})
     string(REGEX REPLACE "^\\$<LINK_ONLY:(.*)>$" "\\1" item "${item}")
+    if(item MATCHES "^\\$<BUILD_INTERFACE:")
+      continue()  # not exported
+    endif()
     if(item MATCHES "^\\$<")
       message(WARNING "ksmc install: ${target} links '${item}' (a generator expression); "
                       "the installed package may miss that dependency")
