@@ -64,6 +64,8 @@ std::vector<Vec2> parse_points(std::string_view text, const std::string& name) {
     if (!to_double(f[0], x)) fail(name, line_no, "'" + std::string(f[0].substr(0, 40)) + "' is not a number");
     if (!to_double(f[1], y)) fail(name, line_no, "'" + std::string(f[1].substr(0, 40)) + "' is not a number");
     if (!std::isfinite(x) || !std::isfinite(y)) fail(name, line_no, "coordinates must be finite (no nan or inf)");
+    if (std::abs(x) > kMaxCoordinate || std::abs(y) > kMaxCoordinate)
+      fail(name, line_no, "coordinates must be within +-1e6 m");
     if (pts.size() >= kMaxPoints) fail(name, line_no, "more than " + std::to_string(kMaxPoints) + " points");
     pts.push_back({x, y});
   }

@@ -19,9 +19,10 @@ class CloudError : public std::runtime_error {
 };
 
 inline constexpr std::size_t kMaxPoints = 1000000;
+inline constexpr double kMaxCoordinate = 1e6;  // metres
 
 // Parses the text (`name` is used in messages). Throws CloudError: malformed line, a value
-// that is not finite, no point at all, more than kMaxPoints points.
+// that is not finite or beyond +-kMaxCoordinate, no point at all, more than kMaxPoints points.
 std::vector<Vec2> parse_points(std::string_view text, const std::string& name);
 // Reads and parses a file; a missing or unreadable file is a CloudError naming it.
 std::vector<Vec2> load_points(const std::filesystem::path& path);

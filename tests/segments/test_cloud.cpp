@@ -32,6 +32,7 @@ TEST_CASE("bad point clouds name the file and line", "[segments][cloud]") {
   CHECK(error_of("1 2\n\n1 x\n") == "c.txt:3: error: 'x' is not a number");
   CHECK(error_of("nan 1\n") == "c.txt:1: error: coordinates must be finite (no nan or inf)");
   CHECK(error_of("1 inf\n") == "c.txt:1: error: coordinates must be finite (no nan or inf)");
+  CHECK(error_of("0 0\n1e7 1\n") == "c.txt:2: error: coordinates must be within +-1e6 m");
   CHECK(error_of("1e999 1\n") == "c.txt:1: error: '1e999' is not a number");
   CHECK(error_of("# nothing\n\n") == "c.txt: error: the point cloud is empty (no 'x y' line)");
   CHECK(error_of("") == "c.txt: error: the point cloud is empty (no 'x y' line)");
