@@ -294,6 +294,10 @@ int run_build(const BuildRequest& request, std::ostream& out, std::ostream& err)
       err << "ksmc build: cannot run " << steps[i].front() << ": " << r.error << "\n";
       return kErrors;
     }
+    if (r.exit_code == kExitInterrupted) {
+      err << "ksmc build: interrupted\n";
+      return kExitInterrupted;
+    }
     if (r.exit_code != 0) {
       std::string text;
       if (!request.verbose) read_text(log, text);

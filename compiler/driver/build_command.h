@@ -29,7 +29,8 @@ struct BuildRequest {
   std::filesystem::path executable;  // this ksmc (locates the installed package)
 };
 
-// Exit status: 0 built, 1 errors in FILE or a failed build, 2 bad usage.
+// Exit status: 0 built, 1 errors in FILE or a failed build, 2 bad usage, 130 interrupted
+// (Ctrl-C; the temporary work folder is removed).
 int run_build(const BuildRequest& request, std::ostream& out, std::ostream& err);
 
 // Exit status: 0 printed, 1 errors in FILE or no kit runs it.
