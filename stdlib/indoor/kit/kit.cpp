@@ -12,6 +12,7 @@
 #include "stdlib/indoor/io/map_loader.h"
 #include "stdlib/indoor/io/world_writer.h"
 #include "stdlib/indoor/kit/indoor_model.h"
+#include "stdlib/indoor/kit/solid_interior.h"
 
 namespace ksmc::stdlib::indoor::kit {
 
@@ -146,6 +147,9 @@ cli::DomainSetup load(const dom::DomainConfig& config, const dom::MlnBinding& bi
   auto map = std::make_shared<io::OccupancyMap>(io::load_map(path, opts));
   if (map->counts().free == 0) throw std::runtime_error(path.string() + ": the map has no free cell");
   const double res = map->resolution;
+  const double solid_depth = in.flags.real("solid-depth");
+  if (!(solid_depth >= 0.0) || !std::isfinite(solid_depth)) throw cli::UsageError("--solid-depth must be >= 0 metres");
+  const std::size_t solid_cells = unexplain_solid_interior(map->grid, solid_depth / res);
   shared->grid = map->grid;
   shared->resolution = res;
   shared->binding = binding;
@@ -221,6 +225,7 @@ cli::DomainSetup load(const dom::DomainConfig& config, const dom::MlnBinding& bi
   extra["wbu_candidates"] = wbu_count;
   extra["rpb_candidate"] = rpb_found;
   extra["frame_deg"] = frame_deg;
+  extra["solid_interior"] = {{"depth_m", solid_depth}, {"cells_unexplained", solid_cells}};
   extra["semantic"] = {{"enabled", s.semantic.enabled}, {"every", shared->tuning.semantic_every},
                        {"after", shared->tuning.semantic_after}};
   setup.summary_extra = std::move(extra);
@@ -245,6 +250,7 @@ cli::DomainSpec domain_spec(const dom::DomainConfig& config, const dom::MlnBindi
       {"semantic-every", "proposals between Markov logic refreshes of the unit types (0 = never)", "500", K::integer},
       {"semantic-after", "first proposal with a Markov logic refresh", "1000", K::integer},
       {"source-refresh", "proposals between FSU / door candidate refreshes", "200", K::integer},
+      {"solid-depth", "occupied cells farther than this (m) from every free cell are classified unexplained: the inside of solid black regions, e.g. a map's outside painted black (0 = eq. 3.7 as is)", "0.5", K::real},
   };
   spec.load = [config, binding](const cli::DomainInput& in) { return load(config, binding, in); };
   return spec;
