@@ -88,8 +88,8 @@ std::vector<Interval> verified_parts(const ClassGrid& grid, const Band& b, doubl
 }  // namespace
 
 std::vector<DoorCandidate> detect_doors(const ClassGrid& grid, const std::vector<OrientedRect>& units,
-                                        const DoorParams& p) {
-  check_class_grid(grid, "detect_doors");
+                                        const DoorParams& p, GridCheck check) {
+  if (check == GridCheck::Full) check_class_grid(grid, "detect_doors");
   for (std::size_t u = 0; u < units.size(); ++u) {
     const auto& r = units[u];
     if (!(r.w > 0) || !(r.h > 0) || !std::isfinite(r.cx) || !std::isfinite(r.cy) || !std::isfinite(r.theta))

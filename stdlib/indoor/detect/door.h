@@ -33,6 +33,6 @@ struct DoorParams {
 // Door candidates between the given units, sorted by (unit_a, unit_b, position). unit_a <
 // unit_b index `units`. Throws std::invalid_argument on a bad grid or a degenerate unit.
 std::vector<DoorCandidate> detect_doors(const ClassGrid& grid, const std::vector<OrientedRect>& units,
-                                        const DoorParams& params = {});
+                                        const DoorParams& params = {}, GridCheck check = GridCheck::Full);
 
 }  // namespace ksmc::stdlib::indoor::detect

@@ -60,8 +60,9 @@ void cluster(std::vector<Piece> pieces, bool horizontal, const SplitParams& p, s
 
 }  // namespace
 
-std::vector<SplitLine> detect_split_lines(const ClassGrid& grid, const OrientedRect& unit, const SplitParams& p) {
-  check_class_grid(grid, "detect_split_lines");
+std::vector<SplitLine> detect_split_lines(const ClassGrid& grid, const OrientedRect& unit, const SplitParams& p,
+                                          GridCheck check) {
+  if (check == GridCheck::Full) check_class_grid(grid, "detect_split_lines");
   if (!(unit.w > 0) || !(unit.h > 0) || !std::isfinite(unit.cx) || !std::isfinite(unit.cy) ||
       !std::isfinite(unit.theta))
     throw std::invalid_argument("detect_split_lines: unit must have finite centre/angle and positive extents");

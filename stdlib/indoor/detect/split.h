@@ -25,6 +25,6 @@ struct SplitParams {
 // Split lines of `unit`, strongest first (ties by position). Endpoints lie on the unit's
 // boundary. Throws std::invalid_argument on a bad grid or a degenerate unit.
 std::vector<SplitLine> detect_split_lines(const ClassGrid& grid, const OrientedRect& unit,
-                                          const SplitParams& params = {});
+                                          const SplitParams& params = {}, GridCheck check = GridCheck::Full);
 
 }  // namespace ksmc::stdlib::indoor::detect

@@ -37,4 +37,9 @@ struct DoorCandidate {
   int unit_b = -1;
 };
 
+// Whether a detector validates its class grid first (an O(map) scan: every value a Cell).
+// Trusted: the caller validated this grid already and calls the detector many times on it
+// (the kit's per-pair door refresh, split lines per unit), so the scan would dominate.
+enum class GridCheck { Full, Trusted };
+
 }  // namespace ksmc::stdlib::indoor::detect

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "stdlib/indoor/detect/hough.h"
+
 namespace ksmc::stdlib::indoor::kit {
 
 namespace {
@@ -30,6 +32,11 @@ bool meet(const Box& a, const Box& b) { return a.x0 <= b.x1 && b.x0 <= a.x1 && a
 std::vector<CandidateDoor> DoorCandidateCache::candidates(const ClassGrid& grid, const std::vector<OrientedRect>& units) {
   std::vector<CandidateDoor> out;
   if (units.size() < 2) return out;
+  if (!checked_ || checked_grid_ != grid.data) {  // validate the grid once, not once per pair
+    detect::check_class_grid(grid, "detect_doors");
+    checked_ = true;
+    checked_grid_ = grid.data;
+  }
   // A wall band reaches `expand` cells off its wall, and its pixel box one or two cells more
   // (rounding); two units whose boxes grown by that much do not meet have no overlapping bands.
   const double margin = std::max(params_.expand, 0.0) + 3.0;
@@ -46,7 +53,7 @@ std::vector<CandidateDoor> DoorCandidateCache::candidates(const ClassGrid& grid,
       auto it = pairs_.find(key);
       if (it == pairs_.end()) {
         ++calls_;
-        it = pairs_.emplace(key, to_door_candidates(detect::detect_doors(grid, {a, b}, params_))).first;
+        it = pairs_.emplace(key, to_door_candidates(detect::detect_doors(grid, {a, b}, params_, detect::GridCheck::Trusted))).first;
       }
       out.insert(out.end(), it->second.begin(), it->second.end());
     }

@@ -22,6 +22,7 @@ class DoorCandidateCache {
       : params_(params), max_pairs_(max_pairs) {}
 
   // Same candidates, in the same order, as to_door_candidates(detect_doors(grid, units, params)).
+  // The grid is validated (an O(map) scan) once per grid buffer, not once per pair.
   std::vector<CandidateDoor> candidates(const ClassGrid& grid, const std::vector<OrientedRect>& units);
 
   std::size_t detector_calls() const { return calls_; }
@@ -31,6 +32,8 @@ class DoorCandidateCache {
   detect::DoorParams params_;
   std::size_t max_pairs_;
   std::size_t calls_ = 0;
+  bool checked_ = false;
+  const unsigned char* checked_grid_ = nullptr;
   std::map<Key, std::vector<CandidateDoor>> pairs_;
 };
 

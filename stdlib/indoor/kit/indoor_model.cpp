@@ -50,7 +50,8 @@ IndoorModel::IndoorModel(std::shared_ptr<const SharedInput> in)
         sp.hough.threshold = in_->settings.sources.split_min_votes;
         sp.axis_tolerance_deg = in_->settings.sources.split_angle_tol_rad * 180.0 / 3.14159265358979323846;
         std::vector<CandidateLine> lines;
-        if (u.rect.w >= 2.0 && u.rect.h >= 2.0) lines = to_line_candidates(detect::detect_split_lines(in_->grid, u.rect, sp));
+        if (u.rect.w >= 2.0 && u.rect.h >= 2.0) lines = to_line_candidates(
+              detect::detect_split_lines(in_->grid, u.rect, sp, detect::GridCheck::Trusted));  // checked by sw_
         it = splits_.emplace(key, std::move(lines)).first;
       }
       return it->second;
