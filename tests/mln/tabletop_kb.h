@@ -1,6 +1,7 @@
-// The table-top knowledge base of the seed (Table 4.3; DESIGN.md section 3) built as
-// a runtime Program by hand: a stand-in until the compiler's lowering produces it.
-// 16 rules; r10's conjunctive consequent becomes two clauses (r10a, r10b).
+// The table-top knowledge base of domains/tabletop.ksm built as a runtime Program by hand:
+// the seed's Table 4.3 (DESIGN.md section 3, r1..r16) plus the domain file's additions
+// r17..r22 (docs/tabletop_kit.md, "Knowledge base"). 22 rules; r10's conjunctive
+// consequent becomes two clauses (r10a, r10b).
 // Soft weights are log-odds: prob p -> log(p / (1 - p)).
 #pragma once
 
@@ -89,6 +90,16 @@ struct TabletopKb {
          {{intersect, true, {0, 1}}, {false_est, false, {0}}, {false_est, false, {1}}});
     rule("r15", 24, 0.7, "supportive(o1) => !falseEst(o1)", 1, {{supportive, true, {0}}, {false_est, true, {0}}});
     rule("r16", 25, 0.9, "stable(o1) => !falseEst(o1)", 1, {{stable, true, {0}}, {false_est, true, {0}}});
+    // Additions of domains/tabletop.ksm (its lines 41-58).
+    rule("r17", 41, 0.9, "!supported(o1)", 1, {{supported, true, {0}}});
+    rule("r18", 46, 0.9, "stable(o1) ^ !table(o1) => supported(o1) v hidden(o1) v falseEst(o1)", 1,
+         {{stable, true, {0}}, {table, false, {0}}, {supported, false, {0}}, {hidden, false, {0}},
+          {false_est, false, {0}}});
+    rule("r19", 49, 0.9, "intersect(o1, o2) ^ supported(o2) ^ !supported(o1) => falseEst(o1)", 2,
+         {{intersect, true, {0, 1}}, {supported, true, {1}}, {supported, false, {0}}, {false_est, false, {0}}});
+    rule("r20", 53, 0.9, "!stable(o1) => !hidden(o1)", 1, {{stable, false, {0}}, {hidden, true, {0}}});
+    rule("r21", 57, 0.7, "!falseEst(o1)", 1, {{false_est, true, {0}}});
+    rule("r22", 58, 0.7, "!hidden(o1)", 1, {{hidden, true, {0}}});
   }
 };
 

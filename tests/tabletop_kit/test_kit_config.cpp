@@ -28,23 +28,26 @@ std::string config_error(const rd::DomainConfig& c) {
 
 TEST_CASE("the .ksm configuration becomes the kit's parameters") {
   const kit::KitConfig k = kit::read_kit_config(tabletop_config());
-  CHECK(k.evidence.stable_tol_rad == Approx(3.0 * 3.14159265358979323846 / 180.0));
+  CHECK(k.evidence.stable_tol_rad == Approx(10.0 * 3.14159265358979323846 / 180.0));
   CHECK(k.evidence.contact_eps == 0.004);
-  CHECK(k.evidence.intersect_eps == 0.004);
+  CHECK(k.evidence.intersect_eps == 0.005);
   CHECK(k.hover_eps == 0.004);
   CHECK(k.likelihood.sigma_px == 1.0);
-  CHECK_FALSE(k.likelihood.robust);
-  CHECK(k.likelihood.outlier_px == 20.0);
+  CHECK(k.likelihood.robust);
+  CHECK(k.likelihood.outlier_px == 5.0);
+  CHECK(k.prior_quantity == kit::PriorQuantity::map);
   REQUIRE(k.kernels.size() == 1);
   CHECK(k.kernels[0].name == "refine");
-  CHECK(k.kernels[0].sigma_t == 0.003);
-  CHECK(k.kernels[0].sigma_r == Approx(0.03490658503988659));
+  CHECK(k.kernels[0].sigma_t == 0.001);
+  CHECK(k.kernels[0].sigma_r == Approx(0.5 * 3.14159265358979323846 / 180.0));
   CHECK(k.kernels[0].candidates == 20);
+  CHECK(k.kernels[0].current_competes);
   REQUIRE(k.schedule.size() == 1);
   CHECK(k.schedule[0].probabilities.at(0).first == "refine");
-  const kit::KitConfig r = kit::read_kit_config(tabletop_config(recommended_tolerances()));
-  CHECK(r.evidence.stable_tol_rad == Approx(10.0 * 3.14159265358979323846 / 180.0));
-  CHECK(r.evidence.intersect_eps == 0.005);
+  const kit::KitConfig s = kit::read_kit_config(tabletop_config(seed_tolerances()));
+  CHECK(s.evidence.stable_tol_rad == Approx(3.0 * 3.14159265358979323846 / 180.0));
+  CHECK(s.evidence.intersect_eps == 0.004);
+  CHECK_FALSE(s.likelihood.robust);
 }
 
 TEST_CASE("unknown calls are ConfigErrors naming file:line") {
@@ -52,37 +55,37 @@ TEST_CASE("unknown calls are ConfigErrors naming file:line") {
     auto c = tabletop_config();
     c.extract[1].call.name = "obb.touch";
     const std::string e = config_error(c);
-    CHECK(e.find("domains/tabletop.ksm:42") != std::string::npos);
+    CHECK(e.find("domains/tabletop.ksm:66") != std::string::npos);
     CHECK(e.find("obb.touch") != std::string::npos);
   }
   SECTION("extract for an unknown predicate") {
     auto c = tabletop_config();
     c.extract[0].predicate = "upright";
-    CHECK(config_error(c).find("domains/tabletop.ksm:41") != std::string::npos);
+    CHECK(config_error(c).find("domains/tabletop.ksm:65") != std::string::npos);
   }
   SECTION("likelihood") {
     auto c = tabletop_config();
     c.likelihood[0].name = "keypoints.cauchy";
     const std::string e = config_error(c);
-    CHECK(e.find("domains/tabletop.ksm:49") != std::string::npos);
+    CHECK(e.find("domains/tabletop.ksm:73") != std::string::npos);
     CHECK(e.find("keypoints.cauchy") != std::string::npos);
   }
   SECTION("prior") {
     auto c = tabletop_config();
     c.prior[0].call.name = "rect_penalty";
-    CHECK(config_error(c).find("domains/tabletop.ksm:48") != std::string::npos);
+    CHECK(config_error(c).find("domains/tabletop.ksm:72") != std::string::npos);
   }
   SECTION("kernel source") {
     auto c = tabletop_config();
     c.kernels[0].sources[0].name = "pose.jump";
     const std::string e = config_error(c);
-    CHECK(e.find("domains/tabletop.ksm:52") != std::string::npos);
+    CHECK(e.find("domains/tabletop.ksm:76") != std::string::npos);
     CHECK(e.find("pose.jump") != std::string::npos);
   }
   SECTION("kernel that is not its own reverse") {
     auto c = tabletop_config();
     c.kernels[0].reverse = "other";
-    CHECK(config_error(c).find("domains/tabletop.ksm:52") != std::string::npos);
+    CHECK(config_error(c).find("domains/tabletop.ksm:76") != std::string::npos);
   }
 }
 
@@ -90,18 +93,18 @@ TEST_CASE("bad parameters and missing items are ConfigErrors") {
   SECTION("negative eps") {
     auto c = tabletop_config();
     c.extract[1].call.args.back().value = rd::Value::num(-1.0);
-    CHECK(config_error(c).find("domains/tabletop.ksm:42") != std::string::npos);
+    CHECK(config_error(c).find("domains/tabletop.ksm:66") != std::string::npos);
   }
   SECTION("hover eps different from contact eps") {
     auto c = tabletop_config();
     c.extract[4].call.args.back().value = rd::Value::num(0.01);
     const std::string e = config_error(c);
-    CHECK(e.find("domains/tabletop.ksm:45") != std::string::npos);
+    CHECK(e.find("domains/tabletop.ksm:69") != std::string::npos);
   }
   SECTION("a non-integer candidate count") {
     auto c = tabletop_config();
     c.kernels[0].sources[0].args.back().value = rd::Value::num(2.5);
-    CHECK(config_error(c).find("domains/tabletop.ksm:52") != std::string::npos);
+    CHECK(config_error(c).find("domains/tabletop.ksm:76") != std::string::npos);
   }
   SECTION("missing extractor") {
     auto c = tabletop_config();
@@ -138,7 +141,7 @@ TEST_CASE("domain_spec reports a configuration error when the binary loads") {
     (void)bad.load(in);
     FAIL("no ConfigError");
   } catch (const rd::ConfigError& e) {
-    CHECK(std::string(e.what()).find("domains/tabletop.ksm:49") != std::string::npos);
+    CHECK(std::string(e.what()).find("domains/tabletop.ksm:73") != std::string::npos);
   }
   const auto spec = kit::domain_spec(tabletop_config(), tabletop_binding());
   CHECK(spec.name == "tabletop");

@@ -44,8 +44,17 @@ const std::vector<Generated>& scenes() {
   return all;
 }
 
-Score run_all(const Tolerances& tol, std::uint64_t iters) {
-  const auto cfg = std::make_shared<const kit::KitConfig>(kit::read_kit_config(tabletop_config(tol)));
+// The sampler settings the Results tables compare (docs/tabletop_kit.md).
+struct Sampler {
+  kit::PriorQuantity prior = kit::PriorQuantity::map;
+  bool current_competes = true;
+};
+
+Score run_all(const Tolerances& tol, std::uint64_t iters, Sampler sampler = {}) {
+  kit::KitConfig config = kit::read_kit_config(tabletop_config(tol));
+  config.prior_quantity = sampler.prior;
+  for (auto& k : config.kernels) k.current_competes = sampler.current_competes;
+  const auto cfg = std::make_shared<const kit::KitConfig>(std::move(config));
   Score s;
   for (std::size_t i = 0; i < scenes().size(); ++i)
     score(run_kit(cfg, scenes()[i].scene, iters, 1 + i), scenes()[i].truth, s);
@@ -68,26 +77,28 @@ TEST_CASE("50 generated scenes: false / hidden / support accuracy") {
   REQUIRE(n_false > 10);
   REQUIRE(n_hidden > 10);
 
+  const Score seed = run_all(seed_tolerances(), iterations(), {kit::PriorQuantity::log_z, false});
+  std::cout << "seed values (3 deg, 4 mm, 4 mm, plain Gaussian), log Z prior, best new candidate always, best state:\n"
+            << table(seed);
+  const Score initial = run_all(Tolerances{}, 0);
+  std::cout << "domains/tabletop.ksm, input poses (0 iterations):\n" << table(initial);
   const Score ksm = run_all(Tolerances{}, iterations());
-  std::cout << "domains/tabletop.ksm as written (3 deg, 4 mm, 4 mm, plain Gaussian), best state:\n" << table(ksm);
-  const Score initial = run_all(recommended_tolerances(), 0);
-  std::cout << "recommended (10 deg, contact 4 mm, intersect 5 mm, robust 5 px), input poses (0 iterations):\n"
-            << table(initial);
-  const Score rec = run_all(recommended_tolerances(), iterations());
-  std::cout << "recommended, best state:\n" << table(rec);
+  std::cout << "domains/tabletop.ksm (MAP-world prior, current pose competes), best state:\n" << table(ksm);
 
-  // Targets: false F1 >= 0.95, hidden F1 >= 0.9 — not reached (docs/tabletop_kit.md says
-  // why: the knowledge base leaves intersecting pairs and covered hidden boxes undecided,
-  // and the log Z prior pulls the chain towards configurations without relations).
-  // Asserted: what the kit reaches on these 50 scenes (seed 2026), with a small margin.
+  // Targets: false F1 >= 0.95, hidden F1 >= 0.9. Asserted: what the kit reaches on these 50
+  // scenes (seed 2026), with a small margin. docs/tabletop_kit.md lists every remaining
+  // miss (intersecting pairs that no evidence orders, pose refinement that drifts a
+  // stacked box off its supporter).
   if (iterations() == 300) {
-    CHECK(initial.is_false.f1() >= 0.85);
-    CHECK(initial.is_hidden.f1() >= 0.75);
-    CHECK(initial.support.f1() >= 0.98);
-    CHECK(rec.is_false.f1() >= 0.74);
-    CHECK(rec.is_hidden.f1() >= 0.70);
-    CHECK(rec.support.f1() >= 0.90);
-    CHECK(rec.support.f1() > ksm.support.f1());
+    CHECK(initial.is_false.f1() >= 0.91);   // measured 0.929
+    CHECK(initial.is_hidden.f1() >= 0.95);  // 0.967
+    CHECK(initial.support.f1() >= 0.98);    // 0.993
+    CHECK(ksm.is_false.f1() >= 0.90);       // 0.918 (target 0.95: missed, see docs)
+    CHECK(ksm.is_hidden.f1() >= 0.94);      // 0.962 (target 0.9: reached)
+    CHECK(ksm.support.f1() >= 0.975);       // 0.990
+    CHECK(ksm.undecided <= 20);             // 11
+    CHECK(ksm.support.f1() > seed.support.f1());
+    CHECK(ksm.is_false.f1() > seed.is_false.f1());
   }
 }
 
@@ -96,8 +107,8 @@ TEST_CASE("HOPE video frame: nothing false or hidden, everything on the table") 
   if (!ksmc::tests::have_shared(rel)) return;
   const auto hope = tt::import_hope_file(ksmc::tests::shared_dir() / rel);
   const auto scene = std::make_shared<const tt::Scene>(hope.scene);
-  for (const auto& [label, tol] : {std::pair<const char*, Tolerances>{"domains/tabletop.ksm", Tolerances{}},
-                                   std::pair<const char*, Tolerances>{"recommended", recommended_tolerances()}}) {
+  for (const auto& [label, tol] : {std::pair<const char*, Tolerances>{"seed values", seed_tolerances()},
+                                   std::pair<const char*, Tolerances>{"domains/tabletop.ksm", Tolerances{}}}) {
     const auto cfg = std::make_shared<const kit::KitConfig>(kit::read_kit_config(tabletop_config(tol)));
     const tt::TabletopResult r = run_kit(cfg, scene, 500, 1);
     const auto sup = tt::support_edges(r.evidence);
@@ -109,7 +120,7 @@ TEST_CASE("HOPE video frame: nothing false or hidden, everything on the table") 
     }
     std::cout << fmt::format("HOPE ({}): {} objects, {} false, {} hidden, {} supported by the table, {} support edges\n",
                              label, r.scene.objects.size(), reported_false, reported_hidden, on_table, sup.size());
-    if (std::string(label) == "recommended") {
+    if (std::string(label) == "domains/tabletop.ksm") {
       CHECK(reported_false == 0);
       CHECK(reported_hidden == 0);
       CHECK(on_table == static_cast<int>(r.scene.objects.size()));

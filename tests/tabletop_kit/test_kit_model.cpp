@@ -8,6 +8,7 @@
 #include <random>
 
 #include "runtime/mln/grounder.h"
+#include "runtime/mln/exact.h"
 #include "runtime/mln/log_z.h"
 #include "runtime/mcmc/rng.h"
 #include "stdlib/tabletop/kit/kit_likelihood.h"
@@ -152,7 +153,37 @@ TEST_CASE("reject restores the log terms bit for bit; snapshot round-trips") {
   CHECK(other.snapshot() == model.snapshot());
 }
 
-TEST_CASE("prior mln is the exact log Z of the query atoms given the evidence") {
+TEST_CASE("refine: the current pose competes, so an accepted move never lowers the likelihood") {
+  const auto scene = example("seed_example.json");
+  for (const bool competes : {true, false}) {
+    kit::TabletopModel model(scene, config(), tabletop_binding());
+    auto kc = kit::read_kit_config(tabletop_config()).kernels[0];
+    kc.current_competes = competes;
+    kit::RefineKernel kernel(kc);
+    ksmc::runtime::mcmc::Rng rng(5);
+    int declined = 0, lowered = 0;
+    for (int step = 0; step < 300; ++step) {
+      const double ll = model.log_likelihood();
+      const auto p = kernel.propose(model, rng);
+      if (p.was_declined()) {
+        ++declined;
+        continue;
+      }
+      if (model.log_likelihood() < ll) ++lowered;
+      model.accept();  // keep every proposal: the ascent alone
+    }
+    INFO("current_competes " << competes);
+    if (competes) {
+      CHECK(lowered == 0);
+      CHECK(declined > 0);  // near the optimum e_{t,0} often has the best weight
+    } else {
+      CHECK(lowered > 0);   // the best new candidate can be worse than the current pose
+      CHECK(declined == 0);
+    }
+  }
+}
+
+TEST_CASE("prior mln is the log-weight of the most probable world given the evidence (log Z kept)") {
   const auto scene = example("seed_example.json");
   const auto cfg = config();
   kit::TabletopModel model(scene, cfg, tabletop_binding());
@@ -175,7 +206,18 @@ TEST_CASE("prior mln is the exact log Z of the query atoms given the evidence") 
   const mln::Grounding g = mln::ground(program, domain, e);  // the generic grounder
   const mln::LogZResult z = mln::log_partition(g.network);
   REQUIRE(z.exact);
-  CHECK(model.log_prior() == Approx(z.log_z).epsilon(1e-12));
+  const mln::MapResult map = mln::exact_map(g.network);
+  REQUIRE(map.feasible);
+  // Default quantity: eq. 4.3 for the world (evidence, most probable query atoms).
+  CHECK(model.log_prior() == Approx(map.log_weight).epsilon(1e-12));
+  CHECK(model.mln_outcome().log_map == Approx(map.log_weight).epsilon(1e-12));
+  CHECK(model.mln_outcome().log_z == Approx(z.log_z).epsilon(1e-12));
+  CHECK(map.log_weight < z.log_z);  // one world of the sum
+  // The log Z reading is still selectable.
+  auto lz = std::make_shared<kit::KitConfig>(*cfg);
+  lz->prior_quantity = kit::PriorQuantity::log_z;
+  kit::TabletopModel model_z(scene, lz, tabletop_binding());
+  CHECK(model_z.log_prior() == Approx(z.log_z).epsilon(1e-12));
 }
 
 TEST_CASE("kit likelihood is eq. 4.4; the robust variant caps residuals at outlier_px") {

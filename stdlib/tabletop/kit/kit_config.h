@@ -29,8 +29,17 @@ struct RefineKernelConfig {
   double sigma_t = 0.0;      // [m]
   double sigma_r = 0.0;      // [rad]
   int candidates = 0;
+  // The current pose takes part in the choice of the best weight (refine_kernel.h).
+  bool current_competes = true;
   std::string where;
 };
+
+// What `prior mln` scores a state with (docs/tabletop_kit.md, "Posterior"):
+//   map   — eq. 4.3 for the scene graph the state stands for: Σ_i w_i n_i(x*) of the world
+//           x* = (extracted evidence, most probable query atoms), the default;
+//   log_z — log Σ_q exp(Σ_i w_i n_i(e, q)) over all query worlds (the earlier reading; it
+//           rewards evidence that leaves query atoms unconstrained, i.e. fewer relations).
+enum class PriorQuantity { map, log_z };
 
 struct KitConfig {
   std::string domain;
@@ -45,6 +54,7 @@ struct KitConfig {
   std::vector<runtime::mcmc::ScheduleRow> schedule;
   std::string likelihood_where;
   std::string prior_where;
+  PriorQuantity prior_quantity = PriorQuantity::map;
 };
 
 // Throws runtime::domain::ConfigError on anything the kit does not implement.

@@ -9,6 +9,7 @@
 
 #include "runtime/mln/error.h"
 #include "runtime/mln/inference.h"
+#include "runtime/mln/maxwalksat.h"
 
 namespace ksmc::stdlib::tabletop::kit {
 
@@ -163,6 +164,14 @@ std::shared_ptr<const MlnOutcome> MlnEvaluator::run(const std::vector<std::uint8
     const mln::InferenceResult r = mln::infer(g.network, opt);
     out->log_z = r.log_z;
     out->log_z_exact = r.log_z_exact;
+    mln::MapResult map;
+    try {
+      map = mln::exact_map(g.network);
+    } catch (const mln::MlnError&) {
+      map = mln::max_walksat(g.network);  // a component too large to enumerate
+      out->log_map_exact = false;
+    }
+    out->log_map = map.feasible ? map.log_weight : -std::numeric_limits<double>::infinity();
     out->method = r.method;
     for (std::size_t a = 0; a < n_; ++a) {
       const std::array<std::int32_t, 1> args{static_cast<std::int32_t>(a)};
@@ -172,6 +181,7 @@ std::shared_ptr<const MlnOutcome> MlnEvaluator::run(const std::vector<std::uint8
   } catch (const mln::MlnError& e) {
     // A hard rule cannot hold under this evidence: the state is impossible.
     out->log_z = -std::numeric_limits<double>::infinity();
+    out->log_map = out->log_z;
     out->method = std::string("impossible: ") + e.what();
   }
   return out;

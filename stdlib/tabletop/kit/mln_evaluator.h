@@ -5,10 +5,12 @@
 // leave every relation as it was) costs one hash and one compare.
 //
 // Inference: mln::infer with Method::Auto (exact per component when small, MC-SAT
-// otherwise) and compute_log_z. Its log_z is the log of the sum over the query worlds of
-// exp(Σ w n) given the evidence, the network's folded constant included — the `prior mln`
-// term (see docs/tabletop_kit.md). Seeds are fixed, so an outcome is a pure function of
-// the evidence bits and the cache never changes results.
+// otherwise) and compute_log_z for the marginals and log Z (the log of the sum over the
+// query worlds of exp(Σ w n) given the evidence, the network's folded constant included),
+// and mln::exact_map (MaxWalkSAT for a component too large) for log_map, the log-weight
+// Σ w n of the most probable world. Either is the `prior mln` term (KitConfig::
+// prior_quantity, docs/tabletop_kit.md). Seeds are fixed, so an outcome is a pure function
+// of the evidence bits and the cache never changes results.
 #pragma once
 
 #include <cstdint>
@@ -27,6 +29,8 @@ namespace ksmc::stdlib::tabletop::kit {
 
 struct MlnOutcome {
   double log_z = 0.0;               // −inf when the evidence violates a hard rule
+  double log_map = 0.0;             // Σ w n of the most probable query world (−inf likewise)
+  bool log_map_exact = true;        // false: MaxWalkSAT (a component too large to enumerate)
   std::vector<double> false_prob;   // P(falseEst(body)), per body (0 = table)
   std::vector<double> hidden_prob;  // P(hidden(body))
   std::string method;

@@ -33,6 +33,9 @@ runtime::mcmc::Proposal RefineKernel::propose_typed(TabletopModel& model, runtim
   const ProposalQ q = proposal_q(weights, model.object_log_likelihood(object));
   if (q.best < 0) return runtime::mcmc::Proposal::declined();
   const std::size_t best = static_cast<std::size_t>(q.best);
+  // e_{t,0} has the best weight: it is the pose the move selects, and the state stays.
+  if (config_.current_competes && !(weights[best] > model.object_log_likelihood(object)))
+    return runtime::mcmc::Proposal::declined();
   model.begin_move(object, candidates[best], weights[best]);
   const double log_pick = -std::log(static_cast<double>(n));
   return runtime::mcmc::Proposal::made(q.log_q_forward + log_pick, q.log_q_backward + log_pick);

@@ -2,7 +2,11 @@
 // objects with keypoint observations (an object without any has a flat likelihood: moving
 // it would follow the prior alone), draw `candidates` Gaussian perturbations of its pose
 // (σ_t, σ_r), weight them and the current pose by the object's keypoint likelihood, and
-// propose the best one. Q is eq. 4.6/4.7
+// propose the best one. The current pose e_{t,0} is one of the weighted poses (its weight
+// is in the denominator of eqs. 4.6/4.7); when it has the best weight the move keeps it
+// (declined: M_{t+1} = M_t), so the likelihood of the moved object never decreases
+// (RefineKernelConfig::current_competes; false proposes the best new candidate always).
+// Q is eq. 4.6/4.7
 // (stdlib/tabletop/pose_proposal.h: proposal_q) times the object choice 1/n in both
 // directions (the reverse move picks the same object with the same probability, so the
 // factor cancels in the ratio; it is included so log_q is the move's real selection

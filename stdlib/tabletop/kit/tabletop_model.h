@@ -1,8 +1,9 @@
 // The table-top posterior of eq. 4.1 as an mcmc::Model:
 //   log p(M|D) = log p(D|M) + log p(M)
 //   log p(D|M) = Σ_o keypoint log-likelihood of o at its pose (eq. 4.4, kit_likelihood.h)
-//   log p(M)   = log Z of the Markov logic network over the query atoms given the evidence
-//                extracted from the poses (eq. 4.3, mln_evaluator.h)
+//   log p(M)   = eq. 4.3 for the scene graph of the poses: Σ w n of the world made of the
+//                extracted evidence and the most probable query atoms (or, with
+//                PriorQuantity::log_z, log Z over the query atoms; mln_evaluator.h)
 // The state is the pose of every object (sizes and keypoints are fixed). A move changes one
 // object's pose: its evidence is re-extracted incrementally (update_evidence), its
 // likelihood term recomputed, and the MLN term looked up (re-run only on new evidence bits).
@@ -27,7 +28,9 @@ class TabletopModel : public runtime::mcmc::Model {
                 const runtime::domain::MlnBinding& binding);
 
   double log_likelihood() const override { return log_likelihood_; }
-  double log_prior() const override { return outcome_->log_z; }
+  double log_prior() const override {
+    return config_->prior_quantity == PriorQuantity::map ? outcome_->log_map : outcome_->log_z;
+  }
   void accept() override;
   void reject() override;
   runtime::mcmc::Snapshot snapshot() const override;

@@ -14,6 +14,12 @@ constexpr double kW_r13_falseest_hidden = 2.1972245773362196;  // prob 0.9
 constexpr double kW_r14_falseest = 2.1972245773362196;  // prob 0.9
 constexpr double kW_r15_falseest = 0.8472978603872034;  // prob 0.7
 constexpr double kW_r16_falseest = 2.1972245773362196;  // prob 0.9
+constexpr double kW_r17_supported = 2.1972245773362196;  // prob 0.9
+constexpr double kW_r18_supported_hidden_falseest = 2.1972245773362196;  // prob 0.9
+constexpr double kW_r19_falseest = 2.1972245773362196;  // prob 0.9
+constexpr double kW_r20_hidden = 2.1972245773362196;  // prob 0.9
+constexpr double kW_r21_falseest = 0.8472978603872034;  // prob 0.7
+constexpr double kW_r22_hidden = 0.8472978603872034;  // prob 0.7
 
 }  // namespace
 
@@ -115,6 +121,36 @@ const mln::Program& program() {
                   {{"o", kType_object, false}},
                   {{kPred_stable, true, {mln::Term::var(0)}}, {kPred_falseEst, true, {mln::Term::var(0)}}},
                   kW_r16_falseest, false, "stable(o) => !falseEst(o)", {"domains/tabletop.ksm", 34}});
+    // r17_supported (domains/tabletop.ksm:41)
+    p.add_clause({"r17_supported",
+                  {{"o", kType_object, false}},
+                  {{kPred_supported, true, {mln::Term::var(0)}}},
+                  kW_r17_supported, false, "!supported(o)", {"domains/tabletop.ksm", 41}});
+    // r18_supported_hidden_falseest (domains/tabletop.ksm:46)
+    p.add_clause({"r18_supported_hidden_falseest",
+                  {{"o", kType_object, false}},
+                  {{kPred_stable, true, {mln::Term::var(0)}}, {kPred_table, false, {mln::Term::var(0)}}, {kPred_supported, false, {mln::Term::var(0)}}, {kPred_hidden, false, {mln::Term::var(0)}}, {kPred_falseEst, false, {mln::Term::var(0)}}},
+                  kW_r18_supported_hidden_falseest, false, "stable(o) ^ !table(o) => supported(o) v hidden(o) v falseEst(o)", {"domains/tabletop.ksm", 46}});
+    // r19_falseest (domains/tabletop.ksm:49)
+    p.add_clause({"r19_falseest",
+                  {{"a", kType_object, false}, {"b", kType_object, false}},
+                  {{kPred_intersect, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_supported, true, {mln::Term::var(1)}}, {kPred_supported, false, {mln::Term::var(0)}}, {kPred_falseEst, false, {mln::Term::var(0)}}},
+                  kW_r19_falseest, false, "intersect(a, b) ^ supported(b) ^ !supported(a) => falseEst(a)", {"domains/tabletop.ksm", 49}});
+    // r20_hidden (domains/tabletop.ksm:53)
+    p.add_clause({"r20_hidden",
+                  {{"o", kType_object, false}},
+                  {{kPred_stable, false, {mln::Term::var(0)}}, {kPred_hidden, true, {mln::Term::var(0)}}},
+                  kW_r20_hidden, false, "!stable(o) => !hidden(o)", {"domains/tabletop.ksm", 53}});
+    // r21_falseest (domains/tabletop.ksm:57)
+    p.add_clause({"r21_falseest",
+                  {{"o", kType_object, false}},
+                  {{kPred_falseEst, true, {mln::Term::var(0)}}},
+                  kW_r21_falseest, false, "!falseEst(o)", {"domains/tabletop.ksm", 57}});
+    // r22_hidden (domains/tabletop.ksm:58)
+    p.add_clause({"r22_hidden",
+                  {{"o", kType_object, false}},
+                  {{kPred_hidden, true, {mln::Term::var(0)}}},
+                  kW_r22_hidden, false, "!hidden(o)", {"domains/tabletop.ksm", 58}});
     return p;
   }();
   return p;
@@ -387,6 +423,88 @@ void ground_r16_falseest(mln::FactorContext& g) {
   }
 }
 
+// r17_supported (domains/tabletop.ksm:41): !supported(o)
+void ground_r17_supported(mln::FactorContext& g) {
+  const std::int32_t n_object = g.size(kType_object);
+  for (std::int32_t v_o = 0; v_o < n_object; ++v_o) {
+    g.begin();
+    if (g.query(kPred_supported, v_o, true)) { g.satisfied(kW_r17_supported); continue; }  // !supported(o)
+    g.soft(kW_r17_supported, 17);
+  }
+}
+
+// r18_supported_hidden_falseest (domains/tabletop.ksm:46): stable(o) ^ !table(o) => supported(o) v hidden(o) v falseEst(o)
+void ground_r18_supported_hidden_falseest(mln::FactorContext& g) {
+  const std::int32_t n_object = g.size(kType_object);
+  for (std::int32_t v_o = 0; v_o < n_object; ++v_o) {
+    if (!g.ev(kPred_stable, v_o)) {  // !stable(o)
+      g.satisfied(kW_r18_supported_hidden_falseest);
+      continue;
+    }
+    if (g.ev(kPred_table, v_o)) {  // table(o)
+      g.satisfied(kW_r18_supported_hidden_falseest);
+      continue;
+    }
+    g.begin();
+    if (g.query(kPred_supported, v_o, false)) { g.satisfied(kW_r18_supported_hidden_falseest); continue; }  // supported(o)
+    if (g.query(kPred_hidden, v_o, false)) { g.satisfied(kW_r18_supported_hidden_falseest); continue; }  // hidden(o)
+    if (g.query(kPred_falseEst, v_o, false)) { g.satisfied(kW_r18_supported_hidden_falseest); continue; }  // falseEst(o)
+    g.soft(kW_r18_supported_hidden_falseest, 18);
+  }
+}
+
+// r19_falseest (domains/tabletop.ksm:49): intersect(a, b) ^ supported(b) ^ !supported(a) => falseEst(a)
+void ground_r19_falseest(mln::FactorContext& g) {
+  const std::int32_t n_object = g.size(kType_object);
+  for (std::int32_t v_a = 0; v_a < n_object; ++v_a) {
+    for (std::int32_t v_b = 0; v_b < n_object; ++v_b) {
+      if (!g.ev(kPred_intersect, std::int64_t{v_a} * n_object + v_b)) {  // !intersect(a, b)
+        g.satisfied(kW_r19_falseest);
+        continue;
+      }
+      g.begin();
+      if (g.query(kPred_supported, v_b, true)) { g.satisfied(kW_r19_falseest); continue; }  // !supported(b)
+      if (g.query(kPred_supported, v_a, false)) { g.satisfied(kW_r19_falseest); continue; }  // supported(a)
+      if (g.query(kPred_falseEst, v_a, false)) { g.satisfied(kW_r19_falseest); continue; }  // falseEst(a)
+      g.soft(kW_r19_falseest, 19);
+    }
+  }
+}
+
+// r20_hidden (domains/tabletop.ksm:53): !stable(o) => !hidden(o)
+void ground_r20_hidden(mln::FactorContext& g) {
+  const std::int32_t n_object = g.size(kType_object);
+  for (std::int32_t v_o = 0; v_o < n_object; ++v_o) {
+    if (g.ev(kPred_stable, v_o)) {  // stable(o)
+      g.satisfied(kW_r20_hidden);
+      continue;
+    }
+    g.begin();
+    if (g.query(kPred_hidden, v_o, true)) { g.satisfied(kW_r20_hidden); continue; }  // !hidden(o)
+    g.soft(kW_r20_hidden, 20);
+  }
+}
+
+// r21_falseest (domains/tabletop.ksm:57): !falseEst(o)
+void ground_r21_falseest(mln::FactorContext& g) {
+  const std::int32_t n_object = g.size(kType_object);
+  for (std::int32_t v_o = 0; v_o < n_object; ++v_o) {
+    g.begin();
+    if (g.query(kPred_falseEst, v_o, true)) { g.satisfied(kW_r21_falseest); continue; }  // !falseEst(o)
+    g.soft(kW_r21_falseest, 21);
+  }
+}
+
+// r22_hidden (domains/tabletop.ksm:58): !hidden(o)
+void ground_r22_hidden(mln::FactorContext& g) {
+  const std::int32_t n_object = g.size(kType_object);
+  for (std::int32_t v_o = 0; v_o < n_object; ++v_o) {
+    g.begin();
+    if (g.query(kPred_hidden, v_o, true)) { g.satisfied(kW_r22_hidden); continue; }  // !hidden(o)
+    g.soft(kW_r22_hidden, 22);
+  }
+}
+
 }  // namespace
 
 mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) {
@@ -409,6 +527,12 @@ mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) 
   ground_r14_falseest(g);
   ground_r15_falseest(g);
   ground_r16_falseest(g);
+  ground_r17_supported(g);
+  ground_r18_supported_hidden_falseest(g);
+  ground_r19_falseest(g);
+  ground_r20_hidden(g);
+  ground_r21_falseest(g);
+  ground_r22_hidden(g);
   return grounding;
 }
 

@@ -18,29 +18,29 @@ domain::DomainConfig make_config() {
   domain::DomainConfig c;
   c.domain = "tabletop";
   c.source = "domains/tabletop.ksm";
-  // domains/tabletop.ksm:36: model scene
+  // domains/tabletop.ksm:60: model scene
   c.model.push_back({"pose", true, "object", "se3", true});
   c.model.push_back({"size", true, "object", "vec3", false});
-  // domains/tabletop.ksm:41: extract stable(o) = obb.stable(pose[o], size[o], tol = 10 deg);
-  c.extract.push_back({"stable", {"o"}, {"obb.stable", {{"pose", V::index("pose", {V::name("o")})}, {"size", V::index("size", {V::name("o")})}, {"tol", V::num(0.17453292519943295)}}, "domains/tabletop.ksm:41"}});
-  // domains/tabletop.ksm:42: extract contact(a, b) = obb.contact(pose[a], size[a], pose[b], size[b], eps = 4 mm);
-  c.extract.push_back({"contact", {"a", "b"}, {"obb.contact", {{"pose_a", V::index("pose", {V::name("a")})}, {"size_a", V::index("size", {V::name("a")})}, {"pose_b", V::index("pose", {V::name("b")})}, {"size_b", V::index("size", {V::name("b")})}, {"eps", V::num(0.004)}}, "domains/tabletop.ksm:42"}});
-  // domains/tabletop.ksm:43: extract intersect(a, b) = obb.intersect(pose[a], size[a], pose[b], size[b], eps = 5 mm);
-  c.extract.push_back({"intersect", {"a", "b"}, {"obb.intersect", {{"pose_a", V::index("pose", {V::name("a")})}, {"size_a", V::index("size", {V::name("a")})}, {"pose_b", V::index("pose", {V::name("b")})}, {"size_b", V::index("size", {V::name("b")})}, {"eps", V::num(0.005)}}, "domains/tabletop.ksm:43"}});
-  // domains/tabletop.ksm:44: extract higher(a, b) = obb.higher(pose[a], size[a], pose[b], size[b]);
-  c.extract.push_back({"higher", {"a", "b"}, {"obb.higher", {{"pose_a", V::index("pose", {V::name("a")})}, {"size_a", V::index("size", {V::name("a")})}, {"pose_b", V::index("pose", {V::name("b")})}, {"size_b", V::index("size", {V::name("b")})}}, "domains/tabletop.ksm:44"}});
-  // domains/tabletop.ksm:45: extract hover(o) = obb.hover(o, eps = 4 mm);
-  c.extract.push_back({"hover", {"o"}, {"obb.hover", {{"o", V::name("o")}, {"eps", V::num(0.004)}}, "domains/tabletop.ksm:45"}});
-  // domains/tabletop.ksm:46: extract table(o) = scene.is_table(o);
-  c.extract.push_back({"table", {"o"}, {"scene.is_table", {{"o", V::name("o")}}, "domains/tabletop.ksm:46"}});
-  // domains/tabletop.ksm:48: prior mln;
-  c.prior.push_back({{}, {}, {"mln", {}, "domains/tabletop.ksm:48"}});
-  // domains/tabletop.ksm:49: likelihood keypoints.gaussian(sigma = 1 px, robust = true, outlier_px = 5 px);
-  c.likelihood.push_back({"keypoints.gaussian", {{"sigma", V::num(1)}, {"robust", V::flag(true)}, {"outlier_px", V::num(5)}}, "domains/tabletop.ksm:49"});
-  // domains/tabletop.ksm:52: kernel refine(o: object) reverse refine = pose.perturb(pose[o], sigma_t = 3 mm, sigma_r = 2 deg, candidates = 20);
-  c.kernels.push_back({"refine", "refine", {{"o", "object"}}, {{"pose.perturb", {{"pose", V::index("pose", {V::name("o")})}, {"sigma_t", V::num(0.003)}, {"sigma_r", V::num(0.03490658503988659)}, {"candidates", V::num(20)}}, "domains/tabletop.ksm:52"}}, "domains/tabletop.ksm:52"});
-  // domains/tabletop.ksm:54: schedule
-  c.schedule.push_back({0, kForever, {{"refine", 1}}});  // domains/tabletop.ksm:55
+  // domains/tabletop.ksm:65: extract stable(o) = obb.stable(pose[o], size[o], tol = 10 deg);
+  c.extract.push_back({"stable", {"o"}, {"obb.stable", {{"pose", V::index("pose", {V::name("o")})}, {"size", V::index("size", {V::name("o")})}, {"tol", V::num(0.17453292519943295)}}, "domains/tabletop.ksm:65"}});
+  // domains/tabletop.ksm:66: extract contact(a, b) = obb.contact(pose[a], size[a], pose[b], size[b], eps = 4 mm);
+  c.extract.push_back({"contact", {"a", "b"}, {"obb.contact", {{"pose_a", V::index("pose", {V::name("a")})}, {"size_a", V::index("size", {V::name("a")})}, {"pose_b", V::index("pose", {V::name("b")})}, {"size_b", V::index("size", {V::name("b")})}, {"eps", V::num(0.004)}}, "domains/tabletop.ksm:66"}});
+  // domains/tabletop.ksm:67: extract intersect(a, b) = obb.intersect(pose[a], size[a], pose[b], size[b], eps = 5 mm);
+  c.extract.push_back({"intersect", {"a", "b"}, {"obb.intersect", {{"pose_a", V::index("pose", {V::name("a")})}, {"size_a", V::index("size", {V::name("a")})}, {"pose_b", V::index("pose", {V::name("b")})}, {"size_b", V::index("size", {V::name("b")})}, {"eps", V::num(0.005)}}, "domains/tabletop.ksm:67"}});
+  // domains/tabletop.ksm:68: extract higher(a, b) = obb.higher(pose[a], size[a], pose[b], size[b]);
+  c.extract.push_back({"higher", {"a", "b"}, {"obb.higher", {{"pose_a", V::index("pose", {V::name("a")})}, {"size_a", V::index("size", {V::name("a")})}, {"pose_b", V::index("pose", {V::name("b")})}, {"size_b", V::index("size", {V::name("b")})}}, "domains/tabletop.ksm:68"}});
+  // domains/tabletop.ksm:69: extract hover(o) = obb.hover(o, eps = 4 mm);
+  c.extract.push_back({"hover", {"o"}, {"obb.hover", {{"o", V::name("o")}, {"eps", V::num(0.004)}}, "domains/tabletop.ksm:69"}});
+  // domains/tabletop.ksm:70: extract table(o) = scene.is_table(o);
+  c.extract.push_back({"table", {"o"}, {"scene.is_table", {{"o", V::name("o")}}, "domains/tabletop.ksm:70"}});
+  // domains/tabletop.ksm:72: prior mln;
+  c.prior.push_back({{}, {}, {"mln", {}, "domains/tabletop.ksm:72"}});
+  // domains/tabletop.ksm:73: likelihood keypoints.gaussian(sigma = 1 px, robust = true, outlier_px = 5 px);
+  c.likelihood.push_back({"keypoints.gaussian", {{"sigma", V::num(1)}, {"robust", V::flag(true)}, {"outlier_px", V::num(5)}}, "domains/tabletop.ksm:73"});
+  // domains/tabletop.ksm:76: kernel refine(o: object) reverse refine = pose.perturb(pose[o], sigma_t = 1 mm, sigma_r = 0.5 deg, candidates = 20);
+  c.kernels.push_back({"refine", "refine", {{"o", "object"}}, {{"pose.perturb", {{"pose", V::index("pose", {V::name("o")})}, {"sigma_t", V::num(0.001)}, {"sigma_r", V::num(0.008726646259971648)}, {"candidates", V::num(20)}}, "domains/tabletop.ksm:76"}}, "domains/tabletop.ksm:76"});
+  // domains/tabletop.ksm:78: schedule
+  c.schedule.push_back({0, kForever, {{"refine", 1}}});  // domains/tabletop.ksm:79
   return c;
 }
 

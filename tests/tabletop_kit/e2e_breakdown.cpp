@@ -1,0 +1,115 @@
+// Error breakdown of the kit on the generated scenes of test_kit_e2e: for every object whose
+// false/hidden decision disagrees with the generator's truth (or is undecided), the truth
+// (false kind, hidden, true stability), the query probabilities, and the evidence the
+// decision came from (at the input poses and at the reported state).
+//
+//   tabletop_e2e_breakdown [iterations=300] [scenes=50] [prior=map|log_z] [current_competes=1|0] [sigma_t_mm sigma_r_deg]
+//
+// A development tool for docs/tabletop_kit.md "Results", not a test.
+#include <cstdlib>
+#include <iostream>
+#include <map>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "stdlib/tabletop/scene_io.h"
+#include "stdlib/tabletop/sim/generator.h"
+#include "stdlib/tabletop/sim/scene_writer.h"
+#include "tests/tabletop_kit/config_fixture.h"
+#include "tests/tabletop_kit/e2e_support.h"
+
+using namespace ksmc::tests::tabletop_kit;
+namespace sim = ksmc::stdlib::tabletop::sim;
+
+namespace {
+
+std::string flag(std::optional<bool> d) { return d ? (*d ? "T" : "f") : "?"; }
+
+// Evidence summary of body b.
+std::string describe(const tt::Evidence& ev, std::size_t b) {
+  std::string s = fmt::format("st={} hov={}", ev.stable[b] ? 1 : 0, ev.hover[b] ? 1 : 0);
+  std::string sup_by, sups, con, inter;
+  for (std::size_t o = 0; o < ev.size(); ++o) {
+    if (o == b) continue;
+    const bool r10 = ev.contact[b][o] && ev.stable[b] && ev.stable[o];
+    if (r10 && ev.higher[b][o]) sup_by += " " + ev.ids[o];
+    else if (r10 && ev.higher[o][b]) sups += " " + ev.ids[o];
+    else if (ev.contact[b][o]) con += " " + ev.ids[o] + (ev.stable[o] ? "(st)" : "");
+    if (ev.intersect[b][o]) inter += " " + ev.ids[o] + (ev.stable[o] ? "(st)" : "");
+  }
+  s += " on[" + sup_by + " ] carries[" + sups + " ] touch[" + con + " ] cut[" + inter + " ]";
+  return s;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::uint64_t iters = argc > 1 ? std::strtoull(argv[1], nullptr, 10) : 300;
+  const int n_scenes = argc > 2 ? std::atoi(argv[2]) : 50;
+  kit::KitConfig config = kit::read_kit_config(tabletop_config());
+  if (argc > 3) config.prior_quantity = std::string(argv[3]) == "log_z" ? kit::PriorQuantity::log_z : kit::PriorQuantity::map;
+  if (argc > 4)
+    for (auto& k : config.kernels) k.current_competes = std::atoi(argv[4]) != 0;
+  if (argc > 6)  // sigma_t [mm], sigma_r [deg]
+    for (auto& k : config.kernels) {
+      k.sigma_t = 1e-3 * std::atof(argv[5]);
+      k.sigma_r = std::atof(argv[6]) / 57.29577951308232;
+    }
+  const auto cfg = std::make_shared<const kit::KitConfig>(config);
+  sim::GeneratorOptions opt;
+  Score total;
+  struct PoseError {
+    double t = 0, z = 0, r = 0;
+  } err[2];
+  long err_count = 0;
+  std::map<std::string, int> categories;
+  for (int i = 0; i < n_scenes; ++i) {
+    const auto g = sim::generate_scene(sim::scene_seed(2026, static_cast<std::uint64_t>(i)), opt);
+    auto load = tt::parse_scene(nlohmann::json::parse(sim::scene_json(g)), "scene", ".");
+    const auto scene = std::make_shared<const tt::Scene>(std::move(load.scene));
+    const auto truth = nlohmann::json::parse(sim::truth_json(g));
+    const tt::TabletopResult r0 = run_kit(cfg, scene, 0, 1 + static_cast<std::uint64_t>(i));
+    const tt::TabletopResult r = iters == 0 ? r0 : run_kit(cfg, scene, iters, 1 + static_cast<std::uint64_t>(i));
+    score(r, truth, total);
+    for (const auto& o : g.objects) {  // pose errors of real objects, input and reported state
+      if (o.false_kind != sim::FalseKind::none) continue;
+      const int idx = r.scene.find(o.id);
+      for (int which = 0; which < 2; ++which) {
+        const auto& est = (which == 0 ? r0 : r).scene.objects[static_cast<std::size_t>(idx)].pose;
+        const Eigen::Vector3d d = est.t - o.clean_pose.t;
+        err[which].t += d.norm();
+        err[which].z += std::abs(d.z());
+        err[which].r += Eigen::AngleAxisd(est.q * o.clean_pose.q.conjugate()).angle();
+      }
+      ++err_count;
+    }
+    for (std::size_t k = 0; k < g.objects.size(); ++k) {
+      const auto& o = g.objects[k];
+      const int idx = r.scene.find(o.id);
+      const auto& p = r.probabilities[static_cast<std::size_t>(idx)];
+      const auto& p0 = r0.probabilities[static_cast<std::size_t>(idx)];
+      const auto f = tt::decide(p.false_prob), h = tt::decide(p.hidden_prob);
+      const bool is_false = o.false_kind != sim::FalseKind::none;
+      const bool f_ok = f && *f == is_false, h_ok = h && *h == o.hidden;
+      if (f_ok && h_ok) continue;
+      std::string cat;
+      if (!f_ok) cat += is_false ? fmt::format("false-FN:{}", sim::to_string(o.false_kind)) : (f ? "false-FP" : "false-undecided");
+      if (!h_ok) cat += std::string(cat.empty() ? "" : "+") + (o.hidden ? "hidden-FN" : (h ? "hidden-FP" : "hidden-undecided"));
+      ++categories[cat];
+      const std::size_t b = tt::Evidence::body(static_cast<std::size_t>(idx));
+      std::cout << fmt::format("s{:02} {:7} {:<40} truth F={} H={} st={} | f={:.2f}{} h={:.2f}{} (input f={:.2f} h={:.2f})\n",
+                               i, o.id, cat, is_false ? 1 : 0, o.hidden ? 1 : 0, o.stable ? 1 : 0, p.false_prob,
+                               flag(f), p.hidden_prob, flag(h), p0.false_prob, p0.hidden_prob);
+      std::cout << "      input: " << describe(r0.evidence, b) << "\n";
+      if (iters > 0) std::cout << "      final: " << describe(r.evidence, b) << "\n";
+    }
+  }
+  for (int which = 0; which < 2; ++which)
+    std::cout << fmt::format("{} poses of real objects: mean |dt| {:.2f} mm, |dz| {:.2f} mm, rotation {:.2f} deg\n",
+                             which == 0 ? "input" : "reported", 1e3 * err[which].t / err_count,
+                             1e3 * err[which].z / err_count, 57.29578 * err[which].r / err_count);
+  std::cout << "\n" << table(total) << "\ncategories:\n";
+  for (const auto& [c, n] : categories) std::cout << fmt::format("  {:4} {}\n", n, c);
+  return 0;
+}
