@@ -114,7 +114,15 @@ std::string project_text(const EmittedDomain& d, const fs::path& prefix, const s
     << "add_executable(" << n << " src/" << n << "_factors.cpp src/" << n << "_model.cpp src/" << n << "_main.cpp)\n"
     << "target_include_directories(" << n << " PRIVATE src)\n"
     << "target_link_libraries(" << n << " PRIVATE ksmc::stdlib_" << d.kit << "_kit ksmc::runtime_cli "
-    << "ksmc::runtime_domain)\n";
+    << "ksmc::runtime_domain)\n"
+    << "# A faster linker when there is one (GNU ld takes ~2 s on the static libraries).\n"
+    << "find_program(KSMC_LD_LLD ld.lld)\n"
+    << "find_program(KSMC_LD_GOLD ld.gold)\n"
+    << "if(CMAKE_CXX_COMPILER_ID MATCHES \"GNU|Clang\" AND KSMC_LD_LLD)\n"
+    << "  target_link_options(" << n << " PRIVATE -fuse-ld=lld)\n"
+    << "elseif(CMAKE_CXX_COMPILER_ID STREQUAL \"GNU\" AND KSMC_LD_GOLD)\n"
+    << "  target_link_options(" << n << " PRIVATE -fuse-ld=gold)\n"
+    << "endif()\n";
   return o.str();
 }
 
