@@ -1,6 +1,7 @@
 // OBB geometry and the evidence extractors on the configurations of seed Fig. 4.9–4.11.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <random>
 
 #include "stdlib/tabletop/extract_contact.h"
@@ -135,6 +136,23 @@ TEST_CASE("stacked: support relations up a stack", "[geometry]") {
   CHECK_FALSE(extract_higher(bottom, top, kParams));
   CHECK(extract_higher(top, kTable, kParams));
   CHECK_FALSE(extract_contact(top, kTable, kParams));
+}
+
+TEST_CASE("stacked and tilted within the stable tolerance: still higher", "[geometry]") {
+  // A 30 cm wide box resting on a 30 x 30 x 10 cm box, tilted 8 deg about x: its bottom
+  // face centre touches the lower top face (z = 0.1), its lowest corner is 2 cm below it.
+  const Obb lower = box(Vector3d(0, 0, 0.05), Vector3d(0.3, 0.3, 0.1));
+  const double tilt = 8.0 * 3.14159265358979323846 / 180.0;
+  const Obb upper = box(Vector3d(0, 0, 0.1 + 0.05 * std::cos(tilt)), Vector3d(0.3, 0.3, 0.1), rot(8, Vector3d::UnitX()));
+  CHECK(extract_stable(upper, kParams));
+  REQUIRE(upper.min_z() < lower.max_z() - kParams.higher_tol);  // a vertex test would fail
+  CHECK(face_half_height(upper) == Approx(0.05 * std::cos(tilt)));
+  CHECK(extract_higher(upper, lower, kParams));
+  CHECK_FALSE(extract_higher(lower, upper, kParams));
+  // Sunk into the lower box by more than the tolerance: no longer higher.
+  const Obb sunk = box(Vector3d(0, 0, 0.1 + 0.05 * std::cos(tilt) - 0.016), Vector3d(0.3, 0.3, 0.1),
+                       rot(8, Vector3d::UnitX()));
+  CHECK_FALSE(extract_higher(sunk, lower, kParams));
 }
 
 TEST_CASE("flat boxes side by side: exactly parallel edges", "[geometry]") {

@@ -35,7 +35,12 @@ std::string describe(const tt::Evidence& ev, std::size_t b) {
     const bool r10 = ev.contact[b][o] && ev.stable[b] && ev.stable[o];
     if (r10 && ev.higher[b][o]) sup_by += " " + ev.ids[o];
     else if (r10 && ev.higher[o][b]) sups += " " + ev.ids[o];
-    else if (ev.contact[b][o]) con += " " + ev.ids[o] + (ev.stable[o] ? "(st)" : "");
+    else if (ev.contact[b][o]) {
+      con += " " + ev.ids[o] + (ev.stable[o] ? "(st)" : "");
+      if (ev.stable[b] && ev.stable[o] && ev.boxes[b].center.z() > ev.boxes[o].center.z())  // why not `higher`
+        con += fmt::format("{{min_z {:.1f} mm, top of {} {:.1f} mm}}", 1e3 * ev.boxes[b].min_z(), ev.ids[o],
+                           1e3 * ev.boxes[o].max_z());
+    }
     if (ev.intersect[b][o]) inter += " " + ev.ids[o] + (ev.stable[o] ? "(st)" : "");
   }
   s += " on[" + sup_by + " ] carries[" + sups + " ] touch[" + con + " ] cut[" + inter + " ]";

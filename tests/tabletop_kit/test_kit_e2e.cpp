@@ -87,16 +87,15 @@ TEST_CASE("50 generated scenes: false / hidden / support accuracy") {
 
   // Targets: false F1 >= 0.95, hidden F1 >= 0.9. Asserted: what the kit reaches on these 50
   // scenes (seed 2026), with a small margin. docs/tabletop_kit.md lists every remaining
-  // miss (intersecting pairs that no evidence orders, pose refinement that drifts a
-  // stacked box off its supporter).
+  // miss (intersecting pairs that no evidence orders, truth the estimate contradicts).
   if (iterations() == 300) {
     CHECK(initial.is_false.f1() >= 0.91);   // measured 0.929
     CHECK(initial.is_hidden.f1() >= 0.95);  // 0.967
     CHECK(initial.support.f1() >= 0.98);    // 0.993
-    CHECK(ksm.is_false.f1() >= 0.90);       // 0.918 (target 0.95: missed, see docs)
-    CHECK(ksm.is_hidden.f1() >= 0.94);      // 0.962 (target 0.9: reached)
-    CHECK(ksm.support.f1() >= 0.975);       // 0.990
-    CHECK(ksm.undecided <= 20);             // 11
+    CHECK(ksm.is_false.f1() >= 0.92);       // 0.939 (target 0.95: missed, see docs)
+    CHECK(ksm.is_hidden.f1() >= 0.955);     // 0.974 (target 0.9: reached)
+    CHECK(ksm.support.f1() >= 0.98);        // 0.993
+    CHECK(ksm.undecided <= 20);             // 10
     CHECK(ksm.support.f1() > seed.support.f1());
     CHECK(ksm.is_false.f1() > seed.is_false.f1());
   }
