@@ -19,6 +19,31 @@ struct Move {
   AtomId to = -1;       // ... or move block's true atom here
 };
 
+bool improves(const Delta& d) { return d.hard < 0 || (d.hard == 0 && d.soft < -1e-9); }
+
+// Steepest-order local search to a 1-flip optimum: WalkSAT only flips atoms of bad clauses,
+// so a state can end a try with an atom whose flip would improve satisfied clauses' cost
+// (e.g. a unit prior like `!supported(o)` outweighed by nothing). Deterministic order.
+void greedy_descent(LocalState& st) {
+  const GroundNetwork& net = st.network();
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (AtomId a = 0; a < net.num_atoms(); ++a) {
+      const std::int32_t b = net.block_of(a);
+      if (b < 0) {
+        if (improves(st.flip_delta(a))) {
+          st.flip(a);
+          changed = true;
+        }
+      } else if (!st.value(a) && improves(st.move_delta(b, a))) {
+        st.move(b, a);
+        changed = true;
+      }
+    }
+  }
+  st.refresh_cost();
+}
+
 }  // namespace
 
 bool walksat_step(LocalState& st, Rng& rng, double noise) {
@@ -89,6 +114,14 @@ MapResult max_walksat(const GroundNetwork& net, const MapOptions& options) {
       walksat_step(st, rng, options.noise);
       ++best.flips;
       if ((f & 1023) == 1023) st.refresh_cost();
+    }
+    // Polish the best state so far to a local optimum of single flips / block moves.
+    st.assign(best.state);
+    greedy_descent(st);
+    if (st.hard_bad() < best_hard || (st.hard_bad() == best_hard && st.soft_cost() < best_soft - 1e-12)) {
+      best_hard = st.hard_bad();
+      best_soft = st.soft_cost();
+      best.state = st.values();
     }
     if (best_hard == 0 && best_soft <= 0.0) break;  // nothing left to gain
   }

@@ -87,7 +87,7 @@ TEST_CASE("table-top scenes: samplers within 0.02 of exact, MAP = exact mode", "
     go.seed = 1;
     go.on_sample = check;
     McSatOptions mo;
-    mo.samples = 50000;  // MC-SAT mixes slower than Rao-Blackwellised Gibbs here
+    mo.samples = 150000;  // MC-SAT mixes slower than Rao-Blackwellised Gibbs here
     mo.seed = 2;
     mo.on_sample = check;
     const double eg = max_error(gibbs_sampling(net, go).marginals, exact.marginals);
