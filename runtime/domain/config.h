@@ -8,6 +8,8 @@
 // naming the call's `file:line`.
 #pragma once
 
+#include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
@@ -72,10 +74,40 @@ struct Call {
     if (v.kind != Value::Kind::Number) throw ConfigError(where + ": " + name + ": parameter '" + param + "' is not a number");
     return v.number;
   }
+  // Checked numbers: a ConfigError naming the call's place when the value is out of range.
+  double positive(const std::string& param) const {
+    const double v = number(param);
+    if (!(v > 0.0) || !std::isfinite(v)) fail(param, "must be positive, got " + show(v));
+    return v;
+  }
+  double non_negative(const std::string& param) const {
+    const double v = number(param);
+    if (!(v >= 0.0) || !std::isfinite(v)) fail(param, "must be >= 0, got " + show(v));
+    return v;
+  }
+  int whole(const std::string& param, int lo, int hi = std::numeric_limits<int>::max()) const {
+    const double v = number(param);
+    if (!(v >= lo && v <= hi) || v != std::floor(v))
+      fail(param, "must be a whole number " +
+                      (hi == std::numeric_limits<int>::max() ? ">= " + std::to_string(lo)
+                                                              : "in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]") +
+                      ", got " + show(v));
+    return static_cast<int>(v);
+  }
   bool flag(const std::string& param) const {
     const Value& v = at(param);
     if (v.kind != Value::Kind::Bool) throw ConfigError(where + ": " + name + ": parameter '" + param + "' is not true/false");
     return v.boolean;
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& param, const std::string& what) const {
+    throw ConfigError(where + ": " + name + ": parameter '" + param + "' " + what);
+  }
+  static std::string show(double v) {
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    return std::string(buf, r.ptr);
   }
 };
 

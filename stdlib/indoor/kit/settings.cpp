@@ -14,21 +14,6 @@ namespace {
   throw dom::ConfigError(c.where + ": " + c.name + ": " + what);
 }
 
-double positive(const dom::Call& c, const std::string& p) {
-  const double v = c.number(p);
-  if (!(v > 0.0) || !std::isfinite(v)) fail(c, "parameter '" + p + "' must be positive, got " + std::to_string(v));
-  return v;
-}
-double non_negative(const dom::Call& c, const std::string& p) {
-  const double v = c.number(p);
-  if (!(v >= 0.0) || !std::isfinite(v)) fail(c, "parameter '" + p + "' must be >= 0, got " + std::to_string(v));
-  return v;
-}
-int whole(const dom::Call& c, const std::string& p, int lo) {
-  const double v = c.number(p);
-  if (!(v >= lo) || v != std::floor(v) || v > 1e9) fail(c, "parameter '" + p + "' must be a whole number >= " + std::to_string(lo));
-  return static_cast<int>(v);
-}
 
 Lut read_lut(const dom::Call& c, const std::string& p) {
   const dom::Value& v = c.at(p);
@@ -62,16 +47,16 @@ void read_extract(const dom::Extract& e, IndoorSettings& s) {
   const dom::Call& c = e.call;
   const std::string& n = c.name;
   if (n == "geom.room_like" || n == "geom.corridor_like" || n == "geom.hall_like") {
-    ClassifierSettings k{positive(c, "big_size"), positive(c, "big_ratio")};
+    ClassifierSettings k{c.positive("big_size"), c.positive("big_ratio")};
     if (k.big_ratio < 1.0) fail(c, "big_ratio must be >= 1");
     if (s.semantic.enabled && (k.big_size_m != s.semantic.classifier.big_size_m || k.big_ratio != s.semantic.classifier.big_ratio))
       fail(c, "the three classifier extractors must share big_size and big_ratio");
     s.semantic.classifier = k;
     s.semantic.enabled = true;
   } else if (n == "geom.adjacent") {
-    s.semantic.adjacent_dilate_cells = non_negative(c, "dilate");
+    s.semantic.adjacent_dilate_cells = c.non_negative("dilate");
   } else if (n == "geom.multi_door") {
-    s.semantic.multi_door_min = whole(c, "min_doors", 1);
+    s.semantic.multi_door_min = c.whole("min_doors", 1);
   } else {
     fail(c, "the indoor kit does not implement this extractor");
   }
@@ -81,11 +66,11 @@ void read_prior(const dom::Prior& p, IndoorSettings& s) {
   const dom::Call& c = p.call;
   if (c.name == "mln" || c.name.empty()) return;
   if (c.name == "rect_penalty") {
-    s.psi1 = non_negative(c, "psi1");
-    s.tol_rad = non_negative(c, "tol");
+    s.psi1 = c.non_negative("psi1");
+    s.tol_rad = c.non_negative("tol");
     if (!p.conditions.empty()) fail(c, "takes no condition");
   } else if (c.name == "overlap_penalty") {
-    s.psi2 = non_negative(c, "psi2");
+    s.psi2 = c.non_negative("psi2");
     if (!p.conditions.empty()) fail(c, "takes no condition");
   } else if (c.name == "gaussian") {
     const dom::Value& x = c.at("x");
@@ -99,7 +84,7 @@ void read_prior(const dom::Prior& p, IndoorSettings& s) {
     s.semantic.sale_predicate = cond.predicate;
     s.semantic.sale_op = cond.op;
     s.semantic.sale_threshold = cond.threshold;
-    s.semantic.sale_sigma_m = positive(c, "sigma");
+    s.semantic.sale_sigma_m = c.positive("sigma");
   } else {
     fail(c, "the indoor kit does not implement this prior");
   }
@@ -109,28 +94,28 @@ void read_source(const dom::Call& c, SourceSettings& s) {
   const std::string& n = c.name;
   if (n == "detect.wbu") {
     s.wbu = true;
-    s.wbu_min_size_m = positive(c, "min_size");
-    s.wbu_max_units = whole(c, "max_units", 1);
+    s.wbu_min_size_m = c.positive("min_size");
+    s.wbu_max_units = c.whole("max_units", 1);
   } else if (n == "detect.fsu") {
     s.fsu = true;
-    s.fsu_after = whole(c, "after", 0);
-    s.fsu_min_area_cells = whole(c, "min_area_cells", 1);
+    s.fsu_after = c.whole("after", 0);
+    s.fsu_min_area_cells = c.whole("min_area_cells", 1);
   } else if (n == "detect.rpb") {
     s.rpb = true;
-    s.rpb_min_size_m = positive(c, "min_size");
+    s.rpb_min_size_m = c.positive("min_size");
   } else if (n == "detect.split_lines") {
     s.split = true;
-    s.split_min_votes = whole(c, "min_votes", 1);
-    s.split_angle_tol_rad = non_negative(c, "angle_tol");
+    s.split_min_votes = c.whole("min_votes", 1);
+    s.split_angle_tol_rad = c.non_negative("angle_tol");
   } else if (n == "partner.inverse_distance") {
     // The kernels' partner choice (MERGE, INTERCHANGE) is inverse-distance already.
   } else if (n == "move.wall_shift") {
     s.wall_shift = true;
-    s.wall_shift_sigma_cells = positive(c, "sigma");
+    s.wall_shift_sigma_cells = c.positive("sigma");
   } else if (n == "detect.doors") {
     s.doors = true;
-    s.door_min_width_m = positive(c, "min_width");
-    s.door_max_width_m = positive(c, "max_width");
+    s.door_min_width_m = c.positive("min_width");
+    s.door_max_width_m = c.positive("max_width");
     if (s.door_max_width_m < s.door_min_width_m) fail(c, "max_width < min_width");
   } else {
     fail(c, "the indoor kit does not implement this proposal source");

@@ -14,22 +14,6 @@ namespace {
   throw dom::ConfigError(c.where + ": " + c.name + ": " + what);
 }
 
-double positive(const dom::Call& c, const std::string& p) {
-  const double v = c.number(p);
-  if (!(v > 0.0) || !std::isfinite(v)) fail(c, "parameter '" + p + "' must be positive");
-  return v;
-}
-double non_negative(const dom::Call& c, const std::string& p) {
-  const double v = c.number(p);
-  if (!(v >= 0.0) || !std::isfinite(v)) fail(c, "parameter '" + p + "' must be >= 0");
-  return v;
-}
-int whole(const dom::Call& c, const std::string& p, int lo, int hi) {
-  const double v = c.number(p);
-  if (!(v >= lo && v <= hi) || v != std::floor(v))
-    fail(c, "parameter '" + p + "' must be a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-  return static_cast<int>(v);
-}
 
 // `line[v]`: the name of the index variable (and checks the collection).
 std::string index_var(const dom::Call& c, const dom::Value& v, const std::string& collection) {
@@ -49,20 +33,20 @@ void read_extract(const dom::Extract& e, SegmentsSettings& s) {
     x.relation = Relation::Short;
     x.arity = 1;
     args.push_back(index_var(c, c.at("s"), s.collection));
-    x.param = positive(c, "max_length");
+    x.param = c.positive("max_length");
   } else {
     if (c.name == "seg.touching") {
       x.relation = Relation::Touching;
-      x.param = non_negative(c, "gap");
+      x.param = c.non_negative("gap");
     } else if (c.name == "seg.perpendicular") {
       x.relation = Relation::Perpendicular;
-      x.param = non_negative(c, "tol");
+      x.param = c.non_negative("tol");
     } else if (c.name == "seg.parallel") {
       x.relation = Relation::Parallel;
-      x.param = non_negative(c, "tol");
+      x.param = c.non_negative("tol");
     } else if (c.name == "seg.close") {
       x.relation = Relation::Close;
-      x.param = non_negative(c, "dist");
+      x.param = c.non_negative("dist");
     } else {
       fail(c, "the segments kit does not implement this extractor");
     }
@@ -96,8 +80,8 @@ void read_prior(const dom::Prior& p, SegmentsSettings& s) {
   } else if (c.name == "seg.complexity") {
     if (!p.vars.empty()) fail(c, "takes no variables");
     s.complexity = true;
-    s.per_segment = non_negative(c, "per_segment");
-    s.per_metre = non_negative(c, "per_metre");
+    s.per_segment = c.non_negative("per_segment");
+    s.per_metre = c.non_negative("per_metre");
   } else if (c.name == "gaussian" || c.name == "gaussian_angle") {
     SemanticTermSpec t;
     t.where = c.where;
@@ -108,7 +92,7 @@ void read_prior(const dom::Prior& p, SegmentsSettings& s) {
     if (x.items.size() != 2) fail(c, "the measure takes two segments");
     t.arg_a = var_index(c, t.vars, index_var(c, x.items[0], s.collection));
     t.arg_b = var_index(c, t.vars, index_var(c, x.items[1], s.collection));
-    t.sigma = positive(c, "sigma");
+    t.sigma = c.positive("sigma");
     for (const dom::Condition& k : p.conditions) {
       ConditionSpec cs;
       cs.probability = k.probability;
@@ -158,27 +142,27 @@ KernelKind kernel_kind(const dom::Kernel& k, bool forward) {
 
 void read_source(const dom::Call& c, SegmentsSettings& s) {
   if (c.name == "detect.ransac") {
-    s.ransac.min_inliers = whole(c, "min_inliers", 2, 1000000);
-    s.ransac.inlier_dist = positive(c, "inlier_dist");
-    s.ransac.candidates = whole(c, "candidates", 1, 100000);
-    s.ransac.max_gap = positive(c, "max_gap");
-    s.birth.jitter = positive(c, "jitter");
-    s.birth.power = non_negative(c, "power");
+    s.ransac.min_inliers = c.whole("min_inliers", 2, 1000000);
+    s.ransac.inlier_dist = c.positive("inlier_dist");
+    s.ransac.candidates = c.whole("candidates", 1, 100000);
+    s.ransac.max_gap = c.positive("max_gap");
+    s.birth.jitter = c.positive("jitter");
+    s.birth.power = c.non_negative("power");
     s.birth.explained = s.ransac.inlier_dist;
   } else if (c.name == "support.poor") {
-    s.death.explain = positive(c, "explain");
+    s.death.explain = c.positive("explain");
   } else if (c.name == "detect.gaps") {
-    s.split.bin = positive(c, "bin");
-    s.split.gap_weight = positive(c, "gap_weight");
-    s.split.jitter = positive(c, "jitter");
-    s.split.near = positive(c, "near");
+    s.split.bin = c.positive("bin");
+    s.split.gap_weight = c.positive("gap_weight");
+    s.split.jitter = c.positive("jitter");
+    s.split.near = c.positive("near");
   } else if (c.name == "partner.inverse_gap") {
-    s.merge.eps = positive(c, "eps");
-    s.merge.angle_scale = positive(c, "angle_scale");
+    s.merge.eps = c.positive("eps");
+    s.merge.angle_scale = c.positive("angle_scale");
   } else if (c.name == "move.endpoint_jitter") {
-    s.jitter.sigma = positive(c, "sigma");
+    s.jitter.sigma = c.positive("sigma");
     s.jitter.shift_prob = c.number("shift_prob");
-    s.jitter.slide = positive(c, "slide");
+    s.jitter.slide = c.positive("slide");
     s.jitter.slide_prob = c.number("slide_prob");
     if (!(s.jitter.shift_prob >= 0.0 && s.jitter.slide_prob >= 0.0 && s.jitter.shift_prob + s.jitter.slide_prob <= 1.0))
       fail(c, "shift_prob and slide_prob must be >= 0 with a sum of at most 1");
@@ -200,7 +184,7 @@ SegmentsSettings read_settings(const dom::DomainConfig& config) {
     throw dom::ConfigError(config.source + ": the segments kit needs exactly one likelihood (points.gaussian)");
   const dom::Call& lc = config.likelihood.front();
   if (lc.name != "points.gaussian") fail(lc, "the segments kit does not implement this likelihood");
-  s.likelihood.sigma = positive(lc, "sigma");
+  s.likelihood.sigma = lc.positive("sigma");
   s.likelihood.background = lc.number("background");
   if (!(s.likelihood.background > 0.0 && s.likelihood.background < 1.0)) fail(lc, "background must be in (0, 1)");
 

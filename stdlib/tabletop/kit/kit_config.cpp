@@ -22,13 +22,6 @@ std::string place(const std::string& where, const rd::DomainConfig& cfg) {
   return where.empty() ? cfg.source : where;
 }
 
-double positive(const rd::Call& call, const std::string& param) {
-  const double v = call.number(param);
-  if (!std::isfinite(v) || v <= 0.0)
-    fail(call.where, fmt::format("{}: parameter '{}' must be positive, got {}", call.name, param, v));
-  return v;
-}
-
 // `pose[o]` / `size[a]`: an Index into the named collection by the given variable.
 void expect_index(const rd::Call& call, const std::string& param, const std::string& collection,
                   const std::string& var) {
@@ -99,24 +92,24 @@ void read_extracts(const rd::DomainConfig& cfg, KitConfig& out) {
     if (e.predicate == "stable") {
       expect_index(c, "pose", "pose", e.vars[0]);
       expect_index(c, "size", "size", e.vars[0]);
-      stable_tol = positive(c, "tol");
+      stable_tol = c.positive("tol");
       if (stable_tol >= std::numbers::pi / 2) fail(where, "obb.stable: tol must be below 90 deg");
     } else if (e.predicate == "contact" || e.predicate == "intersect" || e.predicate == "higher") {
       expect_index(c, "pose_a", "pose", e.vars[0]);
       expect_index(c, "size_a", "size", e.vars[0]);
       expect_index(c, "pose_b", "pose", e.vars[1]);
       expect_index(c, "size_b", "size", e.vars[1]);
-      if (e.predicate == "contact") contact_eps = positive(c, "eps");
-      if (e.predicate == "intersect") intersect_eps = positive(c, "eps");
+      if (e.predicate == "contact") contact_eps = c.positive("eps");
+      if (e.predicate == "intersect") intersect_eps = c.positive("eps");
       // Optional (not yet in stdlib/tabletop.ksm): the tolerance for near-vertical gaps /
       // penetrations between stacked boxes and the table; stdlib default when absent.
       if (c.find("vertical_eps")) {
-        if (e.predicate == "contact") vertical_contact_eps = positive(c, "vertical_eps");
-        if (e.predicate == "intersect") vertical_intersect_eps = positive(c, "vertical_eps");
+        if (e.predicate == "contact") vertical_contact_eps = c.positive("vertical_eps");
+        if (e.predicate == "intersect") vertical_intersect_eps = c.positive("vertical_eps");
       }
     } else if (e.predicate == "hover") {
       expect_name(c, "o", e.vars[0]);
-      out.hover_eps = positive(c, "eps");
+      out.hover_eps = c.positive("eps");
       hover_where = where;
     } else if (e.predicate == "table") {
       expect_name(c, "o", e.vars[0]);
@@ -154,9 +147,9 @@ void read_prior_likelihood(const rd::DomainConfig& cfg, KitConfig& out) {
   const std::string where = place(c.where, cfg);
   if (c.name != "keypoints.gaussian")
     fail(where, fmt::format("likelihood: unknown call '{}' (the tabletop kit implements: keypoints.gaussian)", c.name));
-  out.likelihood.sigma_px = positive(c, "sigma");
+  out.likelihood.sigma_px = c.positive("sigma");
   out.likelihood.robust = c.flag("robust");
-  out.likelihood.outlier_px = positive(c, "outlier_px");
+  out.likelihood.outlier_px = c.positive("outlier_px");
   out.likelihood_where = where;
 }
 
@@ -180,9 +173,9 @@ void read_kernels(const rd::DomainConfig& cfg, KitConfig& out) {
     RefineKernelConfig r;
     r.name = k.name;
     r.reverse = k.reverse;
-    r.sigma_t = positive(c, "sigma_t");
-    r.sigma_r = positive(c, "sigma_r");
-    const double n = positive(c, "candidates");
+    r.sigma_t = c.positive("sigma_t");
+    r.sigma_r = c.positive("sigma_r");
+    const double n = c.positive("candidates");
     if (n != std::floor(n) || n > 100000) fail(cwhere, "pose.perturb: candidates must be an integer in [1, 100000]");
     r.candidates = static_cast<int>(n);
     r.where = where;
