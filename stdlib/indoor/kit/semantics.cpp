@@ -72,7 +72,7 @@ std::int32_t need_predicate(const mln::Program& p, const std::string& name, bool
 
 SemanticEngine::SemanticEngine(const SemanticSettings& settings, const dom::MlnBinding& binding, double resolution,
                                std::uint64_t seed, std::size_t cache_size)
-    : settings_(settings), binding_(binding), resolution_(resolution), seed_(seed), cache_size_(std::max<std::size_t>(cache_size, 1)) {
+    : settings_(settings), binding_(binding), resolution_(resolution), seed_(seed), cache_(cache_size) {
   if (!binding.program || !binding.make_domain || !binding.ground)
     throw dom::ConfigError("indoor kit: the semantic extractors need the generated Markov logic binding");
   const mln::Program& p = binding.program();
@@ -110,18 +110,12 @@ SemanticResult SemanticEngine::evaluate(const World& world) {
         key.push_back(i);
         key.push_back(j);
       }
-  std::shared_ptr<const Indexed> r;
-  for (auto it = cache_.begin(); it != cache_.end(); ++it)
-    if (it->first == key) {
-      ++stats_.cache_hits;
-      cache_.splice(cache_.begin(), cache_, it);
-      r = cache_.front().second;
-      break;
-    }
-  if (!r) {
+  std::shared_ptr<const Indexed> r = cache_.find(key);
+  if (r) {
+    ++stats_.cache_hits;
+  } else {
     r = infer(key, n, adj);
-    cache_.emplace_front(key, r);
-    if (cache_.size() > cache_size_) cache_.pop_back();
+    cache_.insert(key, r);
   }
   SemanticResult out;
   out.method = r->method;

@@ -7,7 +7,6 @@
 
 #include <array>
 #include <cstdint>
-#include <list>
 #include <memory>
 #include <optional>
 #include <string>
@@ -15,6 +14,7 @@
 #include <vector>
 
 #include "runtime/domain/config.h"
+#include "runtime/mln/evidence_cache.h"
 #include "stdlib/indoor/kit/settings.h"
 #include "stdlib/indoor/world.h"
 
@@ -83,11 +83,10 @@ class SemanticEngine {
   runtime::domain::MlnBinding binding_;
   double resolution_;
   std::uint64_t seed_;
-  std::size_t cache_size_;
   std::int32_t unit_type_ = 0;
   std::int32_t p_roli_ = 0, p_coli_ = 0, p_hali_ = 0, p_muldoor_ = 0, p_adj_ = 0, p_sale_ = 0;
   std::array<std::int32_t, kTypes> p_type_{};
-  std::list<std::pair<std::vector<std::int32_t>, std::shared_ptr<const Indexed>>> cache_;  // front = newest
+  runtime::mln::EvidenceCache<Indexed, std::int32_t> cache_;
   SemanticStats stats_;
 };
 

@@ -18,15 +18,6 @@ namespace {
 
 constexpr double kNegInf = -std::numeric_limits<double>::infinity();
 
-std::uint64_t hash_bits(const std::vector<std::uint8_t>& bits) {
-  std::uint64_t h = 1469598103934665603ULL;
-  for (const std::uint8_t b : bits) {
-    h ^= b;
-    h *= 1099511628211ULL;
-  }
-  return h;
-}
-
 bool relation(const ExtractSpec& x, const Segment& s, const Segment& t) {
   switch (x.relation) {
     case Relation::Touching: return touching(s, t, x.param);
@@ -57,7 +48,7 @@ std::size_t ipow(std::size_t n, std::size_t k) {
 }  // namespace
 
 Semantics::Semantics(const SegmentsSettings& settings, const dom::MlnBinding& binding, std::size_t cache_capacity)
-    : settings_(settings), binding_(binding), capacity_(cache_capacity == 0 ? 1 : cache_capacity) {
+    : settings_(settings), binding_(binding), cache_(cache_capacity) {
   if (!binding_.program || !binding_.make_domain || !binding_.ground)
     throw dom::ConfigError("segments kit: incomplete Markov logic binding");
   program_ = &binding_.program();
@@ -125,30 +116,15 @@ std::vector<std::uint8_t> Semantics::key(const std::vector<Line>& lines) const {
 std::shared_ptr<const MlnOutcome> Semantics::evaluate(const std::vector<Line>& lines) {
   ++stats_.lookups;
   const std::vector<std::uint8_t> bits = key(lines);
-  const std::uint64_t h = hash_bits(bits);
-  auto [lo, hi] = index_.equal_range(h);
-  for (auto it = lo; it != hi; ++it)
-    if (it->second->bits == bits) {
-      ++stats_.hits;
-      lru_.splice(lru_.begin(), lru_, it->second);
-      return lru_.front().outcome;
-    }
+  if (auto hit = cache_.find(bits)) {
+    ++stats_.hits;
+    return hit;
+  }
   const auto t0 = std::chrono::steady_clock::now();
   auto outcome = run(bits, lines.size());
   stats_.run_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   ++stats_.runs;
-  lru_.push_front(Entry{bits, outcome});
-  index_.emplace(h, lru_.begin());
-  if (lru_.size() > capacity_) {
-    auto last = std::prev(lru_.end());
-    auto [a, b] = index_.equal_range(hash_bits(last->bits));
-    for (auto it = a; it != b; ++it)
-      if (it->second == last) {
-        index_.erase(it);
-        break;
-      }
-    lru_.erase(last);
-  }
+  cache_.insert(bits, outcome);
   return outcome;
 }
 

@@ -6,14 +6,13 @@
 #pragma once
 
 #include <cstdint>
-#include <list>
 #include <map>
 #include <memory>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "runtime/domain/config.h"
+#include "runtime/mln/evidence_cache.h"
 #include "stdlib/segments/kit/settings.h"
 #include "stdlib/segments/scene.h"
 
@@ -63,13 +62,7 @@ class Semantics {
   std::vector<std::int32_t> extract_pred_;  // per settings.extracts
   std::vector<std::int32_t> queries_;
   std::vector<std::vector<std::int32_t>> term_cond_pred_;  // per term, per condition
-  std::size_t capacity_;
-  struct Entry {
-    std::vector<std::uint8_t> bits;
-    std::shared_ptr<const MlnOutcome> outcome;
-  };
-  std::list<Entry> lru_;
-  std::unordered_multimap<std::uint64_t, std::list<Entry>::iterator> index_;
+  runtime::mln::EvidenceCache<MlnOutcome> cache_;
   std::map<std::size_t, double> baseline_;
   MlnStats stats_;
 };

@@ -26,21 +26,11 @@ std::int32_t predicate(const mln::Program& p, const char* name, std::size_t arit
   return *id;
 }
 
-// FNV-1a over the bits.
-std::uint64_t hash_bits(const std::vector<std::uint8_t>& bits) {
-  std::uint64_t h = 1469598103934665603ULL;
-  for (const std::uint8_t b : bits) {
-    h ^= b;
-    h *= 1099511628211ULL;
-  }
-  return h;
-}
-
 }  // namespace
 
 MlnEvaluator::MlnEvaluator(const rd::MlnBinding& binding, const std::vector<std::string>& body_ids,
                            std::size_t cache_capacity)
-    : binding_(binding), n_(body_ids.size()), capacity_(cache_capacity == 0 ? 1 : cache_capacity) {
+    : binding_(binding), n_(body_ids.size()), cache_(cache_capacity) {
   if (!binding_.program || !binding_.make_domain || !binding_.ground)
     throw rd::ConfigError("tabletop kit: incomplete Markov logic binding");
   const mln::Program& p = binding_.program();
@@ -108,14 +98,9 @@ std::shared_ptr<const MlnOutcome> MlnEvaluator::evaluate_key(const std::vector<s
 
 std::shared_ptr<const MlnOutcome> MlnEvaluator::lookup(const std::vector<std::uint8_t>& bits) {
   ++stats_.lookups;
-  const std::uint64_t h = hash_bits(bits);
-  auto [lo, hi] = index_.equal_range(h);
-  for (auto it = lo; it != hi; ++it) {
-    if (it->second->bits == bits) {
-      ++stats_.hits;
-      lru_.splice(lru_.begin(), lru_, it->second);  // iterators stay valid
-      return lru_.front().outcome;
-    }
+  if (auto hit = cache_.find(bits)) {
+    ++stats_.hits;
+    return hit;
   }
   std::shared_ptr<const MlnOutcome> outcome;
   {
@@ -123,18 +108,7 @@ std::shared_ptr<const MlnOutcome> MlnEvaluator::lookup(const std::vector<std::ui
     outcome = run(bits);
   }
   ++stats_.runs;
-  lru_.push_front(Entry{h, bits, outcome});
-  index_.emplace(h, lru_.begin());
-  if (lru_.size() > capacity_) {
-    auto last = std::prev(lru_.end());
-    auto [a, b] = index_.equal_range(last->hash);
-    for (auto it = a; it != b; ++it)
-      if (it->second == last) {
-        index_.erase(it);
-        break;
-      }
-    lru_.erase(last);
-  }
+  cache_.insert(bits, outcome);
   return outcome;
 }
 

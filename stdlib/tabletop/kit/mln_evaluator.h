@@ -14,14 +14,13 @@
 #pragma once
 
 #include <cstdint>
-#include <list>
 #include <memory>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "runtime/domain/config.h"
 #include "runtime/mln/evidence.h"
+#include "runtime/mln/evidence_cache.h"
 #include "runtime/mln/program.h"
 #include "stdlib/tabletop/evidence.h"
 
@@ -69,14 +68,7 @@ class MlnEvaluator {
   std::size_t n_ = 0;
   runtime::mln::Domain domain_;
   std::int32_t p_stable_, p_table_, p_hover_, p_contact_, p_intersect_, p_higher_, p_false_, p_hidden_;
-  std::size_t capacity_;
-  struct Entry {
-    std::uint64_t hash;
-    std::vector<std::uint8_t> bits;
-    std::shared_ptr<const MlnOutcome> outcome;
-  };
-  std::list<Entry> lru_;  // most recent first
-  std::unordered_multimap<std::uint64_t, std::list<Entry>::iterator> index_;
+  runtime::mln::EvidenceCache<MlnOutcome> cache_;
   MlnStats stats_;
 };
 
