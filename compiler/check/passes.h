@@ -42,6 +42,14 @@ class WeightsPass final : public Pass {
 };
 
 // `extract` targets: an evidence predicate over distinct variables, extracted once.
+// Names every rule of the main file (compiler/check/rule_names.h) into SymbolTable::rule_names;
+// a duplicate name is an error at the second rule.
+class RuleNamesPass final : public Pass {
+ public:
+  [[nodiscard]] std::string_view name() const override { return "rule-names"; }
+  void run(Context& ctx) override;
+};
+
 class ExtractPass final : public Pass {
  public:
   [[nodiscard]] std::string_view name() const override { return "extract"; }
