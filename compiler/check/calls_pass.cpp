@@ -65,7 +65,8 @@ class Checker {
     if (t.base == "int" || t.base == "real") return "a number without unit";
     if (t.base == "string") return "a string";
     if (t.base == "bool") return "a boolean";
-    if (t.base == "query" || t.base == "evidence") return "a predicate name";
+    if (t.base == "query") return "a query predicate name";
+    if (t.base == "evidence") return "an evidence predicate name";
     const TypeSym* ts = s_.type(t.base);
     if (ts != nullptr && ts->kind == TypeSym::Kind::Quantity) return quantity_phrase(t.base, t.unit);
     if (ts != nullptr && ts->kind == TypeSym::Kind::Domain) return "a variable of type '" + t.base + "'";
