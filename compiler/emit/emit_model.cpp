@@ -17,14 +17,35 @@ namespace {
 
 using lower::one_line;
 
+// A name of the domain language as a C++ identifier: a C++ keyword gets a trailing
+// underscore (`seg.short` -> `seg::short_`; stdlib/<kit>/blocks.h declares it so).
+std::string block_identifier(const std::string& name) {
+  static const std::set<std::string> keywords = {
+      "alignas", "alignof", "and", "and_eq", "asm", "auto", "bitand", "bitor", "bool", "break", "case", "catch",
+      "char", "char8_t", "char16_t", "char32_t", "class", "compl", "concept", "const", "consteval", "constexpr",
+      "constinit", "const_cast", "continue", "co_await", "co_return", "co_yield", "decltype", "default", "delete",
+      "do", "double", "dynamic_cast", "else", "enum", "explicit", "export", "extern", "false", "float", "for",
+      "friend", "goto", "if", "inline", "int", "long", "mutable", "namespace", "new", "noexcept", "not", "not_eq",
+      "nullptr", "operator", "or", "or_eq", "private", "protected", "public", "register", "reinterpret_cast",
+      "requires", "return", "short", "signed", "sizeof", "static", "static_assert", "static_cast", "struct",
+      "switch", "template", "this", "thread_local", "throw", "true", "try", "typedef", "typeid", "typename",
+      "union", "unsigned", "using", "virtual", "void", "volatile", "wchar_t", "while", "xor", "xor_eq"};
+  return keywords.count(name) ? name + "_" : name;
+}
+
 // `geom.room_like` -> `blk::geom::room_like`.
 std::string block_name(const std::string& qualified) {
   std::string s = "blk::";
+  std::string part;
   for (char ch : qualified) {
-    if (ch == '.') s += "::";
-    else s.push_back(ch);
+    if (ch == '.') {
+      s += block_identifier(part) + "::";
+      part.clear();
+    } else {
+      part.push_back(ch);
+    }
   }
-  return s;
+  return s + block_identifier(part);
 }
 
 // A C++ double literal that reads back to exactly `v`.
@@ -296,7 +317,7 @@ class ModelEmitter {
     return {};
   }
 
-  static std::string move(const std::string& m) { return m.empty() ? "blk::Move{}" : "blk::Move::" + m; }
+  static std::string move(const std::string& m) { return m.empty() ? "blk::Move{}" : "blk::Move::" + block_identifier(m); }
 
   void item(std::ostringstream& o, const ast::Item& item) const {
     const Frame none;
