@@ -57,6 +57,7 @@ class ModelEmitter {
         return s + "}";
       }
       case K::Entity: return slot(v.slot);
+      case K::Constant: return "std::int32_t{" + std::to_string(v.slot) + "} /* " + v.text + " */";
       case K::Element: return "s." + v.type + "(" + slot(v.slot) + ")";
       case K::Collection: return "s." + v.type + "s()";
       case K::Scalar: return "s." + v.type + "()";

@@ -29,6 +29,7 @@ struct ValueIr {
     Pred,        // a predicate (`query` / `evidence` / `pred` parameter): `text`
     PredSet,     // `set<...>` of predicates: `preds`
     Entity,      // an entity variable: the binding's constant `slot`
+    Constant,    // a constant `text` of enumerated type `type`: its index `slot` within the type
     Element,     // `x[v]`: element `slot` of model variable `text`, of value type `type`
     Collection,  // a whole variable-size model collection `text` of value type `type`
     Scalar,      // a scalar model variable `text` of value type `type`

@@ -99,6 +99,7 @@ class Dumper {
         return s + "}";
       }
       case K::Entity: return "entity c" + std::to_string(v.slot);
+      case K::Constant: return "constant " + v.type + " " + v.text + " = " + std::to_string(v.slot);
       case K::Element: return v.type + " " + v.text + "[c" + std::to_string(v.slot) + "]";
       case K::Collection: return v.type + "[] " + v.text;
       case K::Scalar: return v.type + " " + v.text;

@@ -107,6 +107,14 @@ class DomainLowerer {
     }
   }
 
+  int constant_index(const std::string& type, const std::string& name) const {
+    const check::TypeSym* t = s_.type(type);
+    if (t == nullptr || t->domain == nullptr) return 0;
+    for (std::size_t i = 0; i < t->domain->constants.size(); ++i)
+      if (t->domain->constants[i].name == name) return static_cast<int>(i);
+    return 0;
+  }
+
   const ast::ModelVar* model_var(const std::string& name) const {
     auto it = s_.model_vars.find(name);
     return it == s_.model_vars.end() ? nullptr : it->second.decl;
@@ -152,6 +160,11 @@ class DomainLowerer {
           v.kind = mv->collection ? ValueIr::Kind::Collection : ValueIr::Kind::Scalar;
           v.text = e.text;
           v.type = mv->type.name;
+        } else if (auto c = s_.constants.find(e.text); c != s_.constants.end()) {
+          v.kind = ValueIr::Kind::Constant;
+          v.text = e.text;
+          v.type = c->second.type;
+          v.slot = constant_index(c->second.type, e.text);
         }
         break;
       case K::Index: {
