@@ -33,7 +33,7 @@ bool extract_close(const Scene& s, const std::int32_t* c) {
 }
 // extract short(s) = seg.short(line[s], max_length = 40 cm);
 bool extract_short(const Scene& s, const std::int32_t* c) {
-  return blk::seg::short(s, s.segment(c[0]), 0.4);
+  return blk::seg::short_(s, s.segment(c[0]), 0.4);
 }
 // prior for a, b where P(Corner(a, b)) > 0.5: gaussian(endpoint_gap(line[a], line[b]), sigma = 10 cm);
 double prior_Corner_gaussian(const Scene& s, const std::int32_t* c) {
