@@ -1,5 +1,5 @@
-// Development binary `indoor-dev`: what the generated indoor_main.cpp is, with the hand-written
-// binding of tests/indoor_kit/binding.h standing in for the generated indoor_model.cpp.
+// Development binary `indoor-dev`: bin/indoor built in the test tree (the generated binding of
+// domains/indoor.ksm through the kit), so the kit tests run it without the domains/ build.
 #include "runtime/cli/domain_main.h"
 #include "stdlib/indoor/kit/kit.h"
 #include "tests/indoor_kit/binding.h"

@@ -122,7 +122,8 @@ TEST_CASE("the semantic layer types the units from the type group and is cached 
   const auto q = sem.queries_json(r);
   CHECK(q.at("Room").at("u1").get<double>() == Approx(r.type_probs[0][0]));
   CHECK(q.contains("SaLe"));
-  CHECK(sem.evidence_db(r).find("Adj(u1, u2)") != std::string::npos);
+  CHECK(sem.evidence_db(r).find("\nAdj(u1,u2)\n") != std::string::npos);
+  CHECK(sem.evidence_db(r).find("\n!Adj(u1,u4)\n") != std::string::npos);
   // Same evidence: no new inference.
   const auto inferences = sem.stats().inferences;
   const SemanticResult r2 = sem.evaluate(w);

@@ -111,7 +111,7 @@ ordered_json world_to_json(const WorldResult& w) {
   out["doors"] = doors;
   out["adjacent"] = adjacent;
   if (!w.types.empty()) out["types"] = w.types;
-  if (w.queries.is_object()) out["queries"] = ordered_json::parse(w.queries.dump());  // sorted keys
+  if (w.queries.is_object()) out["queries"] = w.queries;
   out["metrics"] = metrics;
   return out;
 }

@@ -140,7 +140,7 @@ WorldResult parse_world_json(const std::string& text, const std::string& name) {
   }
   if (root.contains("queries")) {
     if (!root["queries"].is_object()) r.fail("queries", "expected an object");
-    w.queries = root["queries"];
+    w.queries = nlohmann::ordered_json::parse(root["queries"].dump());
   }
   if (root.contains("metrics")) {
     const json& m = root["metrics"];

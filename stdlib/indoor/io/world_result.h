@@ -62,8 +62,9 @@ struct WorldResult {
   // pick the node colours of scene.dot. Written as "types" when not empty.
   std::vector<std::string> types;
   // The marginal of every ground query atom, {"Room": {"u3": 0.91}, "SaLe": {"u3,u7": 0.8}}
-  // (units named u<id>). Written as "queries" when it is an object.
-  nlohmann::json queries;
+  // (units named u<id>; runtime::domain::Semantics::queries_json). Written as "queries", in
+  // its own order, when it is an object.
+  nlohmann::ordered_json queries;
 };
 
 // Fills map info (size, resolution, origin, counts) from a loaded map; `source` is written

@@ -7,6 +7,7 @@
 #include <memory>
 #include <sstream>
 
+#include "runtime/domain/kernels.h"
 #include "stdlib/indoor/detect/orientation.h"
 #include "stdlib/indoor/detect/rpb.h"
 #include "stdlib/indoor/detect/wbu.h"
@@ -102,21 +103,6 @@ io::WorldResult make_result(IndoorModel& m, const io::OccupancyMap& map, const s
     r.trace.push_back({static_cast<std::int64_t>(c.iterations), c.final_log_posterior, c.iterations ? static_cast<double>(c.accepted()) / static_cast<double>(c.iterations) : 0.0});
   }
   return r;
-}
-
-// The schedule rows of the binding for the engine (kernel names as declared).
-mcmc::Schedule schedule_of(const blocks::Binding& b) {
-  std::vector<mcmc::KernelInfo> infos;
-  for (const auto& k : b.kernels) infos.push_back({k.name, k.reverse});
-  std::vector<mcmc::ScheduleRow> rows;
-  for (const auto& r : b.schedule)
-    rows.push_back({static_cast<std::uint64_t>(r.begin),
-                    r.end == dom::ScheduleRow::kForever ? mcmc::kForever : static_cast<std::uint64_t>(r.end), r.probabilities});
-  try {
-    return mcmc::Schedule(infos, rows);
-  } catch (const mcmc::ScheduleError& e) {
-    throw dom::ConfigError(b.source + ": schedule (internal: ksmc check accepted it): " + e.what());
-  }
 }
 
 // Fixed unit candidates of each pool (WBU, and RPB with --robot) and the FSU frame.
@@ -219,14 +205,21 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
   shared->evidence = std::make_unique<MapEvidence>(map->grid, 1);
 
   cli::DomainSetup setup;
-  for (std::size_t i = 0; i < plan.kernels.size(); ++i) {
-    const auto& d = *plan.kernels[i].decl;
-    setup.kernels.push_back(std::make_shared<IndoorKernel>(d.name, d.reverse, i));
-  }
-  setup.schedule = schedule_of(*binding);
+  const blocks::KernelDecl* first = binding->kernels.data();  // KitPlan::kernels has the same order
+  dom::KernelTable table = dom::make_kernels(binding->kernels, binding->schedule, [first](const blocks::KernelDecl& d) {
+    return std::make_shared<IndoorKernel>(d.name, d.reverse, static_cast<std::size_t>(&d - first));
+  });
+  setup.kernels = std::move(table.kernels);
+  setup.schedule = std::move(table.schedule);
   std::shared_ptr<const SharedInput> cshared = shared;
   setup.model_factory = [cshared](unsigned) { return std::make_unique<IndoorModel>(cshared); };
   if (map->image != map->source) setup.extra_inputs.push_back(map->image);
+  if (plan.semantic)
+    setup.evidence_db = [](mcmc::Model& best) {
+      auto& m = static_cast<IndoorModel&>(best);
+      const auto sem = m.final_semantics();
+      return m.semantics()->evidence_db(*sem);
+    };
   const std::string source = path.filename().string();
   setup.write_results = [map, source](const mcmc::RunResult& run, mcmc::Model& best, cli::OutputDir& out) {
     auto& m = static_cast<IndoorModel&>(best);

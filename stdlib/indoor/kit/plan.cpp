@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "runtime/domain/labels.h"
+
 namespace ksmc::stdlib::indoor::kit {
 
 namespace blk = blocks;
@@ -80,18 +82,6 @@ SourcePool pool_of(const std::vector<blk::Source>& sources) {
   return p;
 }
 
-// The first exactly-one-of group of unary query predicates over `type`.
-std::vector<std::int32_t> type_group(const runtime::mln::Program& p, std::int32_t type) {
-  for (const auto& g : p.groups) {
-    const bool unary = !g.predicates.empty() && std::all_of(g.predicates.begin(), g.predicates.end(), [&](std::int32_t q) {
-      const auto& pr = p.predicates[static_cast<std::size_t>(q)];
-      return pr.query && pr.arg_types.size() == 1 && pr.arg_types[0] == type;
-    });
-    if (unary) return g.predicates;
-  }
-  return {};
-}
-
 }  // namespace
 
 KitPlan make_plan(const blk::Binding& b) {
@@ -105,7 +95,8 @@ KitPlan make_plan(const blk::Binding& b) {
   }
   plan.semantic = b.mln.program != nullptr;
   if (plan.semantic) {
-    plan.type_predicates = type_group(b.mln.program(), b.constant_type);
+    const auto groups = dom::label_groups(b.mln.program(), b.constant_type);
+    if (!groups.empty()) plan.type_predicates = groups.front().predicates;
     for (std::int32_t q : plan.type_predicates)
       plan.lenient.push_back(std::find(b.likelihood.lenient_types.begin(), b.likelihood.lenient_types.end(), q) !=
                              b.likelihood.lenient_types.end());

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "runtime/domain/labels.h"
+
 namespace ksmc::stdlib::indoor::kit {
 
 namespace dom = runtime::domain;
@@ -28,13 +30,9 @@ SemanticResult SemanticLayer::evaluate(const World& w) {
   for (std::size_t i = 0; i < n; ++i) {
     const std::int32_t arg[1] = {static_cast<std::int32_t>(i)};
     std::vector<double> probs;
-    int best = plan_.type_predicates.empty() ? -1 : 0;
-    for (std::size_t k = 0; k < plan_.type_predicates.size(); ++k) {
-      probs.push_back(sem_.value(o, plan_.type_predicates[k], arg));
-      if (probs[k] > probs[static_cast<std::size_t>(best)]) best = static_cast<int>(k);
-    }
+    for (std::int32_t q : plan_.type_predicates) probs.push_back(sem_.value(o, q, arg));
+    r.type.push_back(probs.empty() ? -1 : static_cast<int>(dom::most_probable(probs)));
     r.type_probs.push_back(std::move(probs));
-    r.type.push_back(best);
   }
   // The bindings of each conditional prior (every combination of constants of its variables'
   // types) whose conditions all hold in the outcome.
@@ -89,7 +87,7 @@ std::vector<std::string> SemanticLayer::names(const SemanticResult& r) const {
   return out;
 }
 
-nlohmann::json SemanticLayer::queries_json(const SemanticResult& r) const { return sem_.queries_json(*r.outcome, names(r)); }
+nlohmann::ordered_json SemanticLayer::queries_json(const SemanticResult& r) const { return sem_.queries_json(*r.outcome, names(r)); }
 
 std::string SemanticLayer::evidence_db(const SemanticResult& r) const { return sem_.evidence_db(*r.outcome, names(r)); }
 

@@ -46,7 +46,7 @@ class SemanticLayer {
   double log_prior(const World& w, const std::vector<PriorBinding>& terms) const;
 
   // The marginal of every ground query atom, units named u<id> ({"Room": {"u3": 0.91}}).
-  nlohmann::json queries_json(const SemanticResult& r) const;
+  nlohmann::ordered_json queries_json(const SemanticResult& r) const;
   // The evidence of `r` as an Alchemy .db (constants u<id>).
   std::string evidence_db(const SemanticResult& r) const;
   // Names of the type predicates (KitPlan::type_predicates order).
