@@ -14,9 +14,14 @@ std::vector<std::unique_ptr<check::Pass>> make_check_passes() {
   p.push_back(std::make_unique<check::ArityPass>());
   p.push_back(std::make_unique<check::VariableTypesPass>());
   p.push_back(std::make_unique<check::WeightsPass>());
+  p.push_back(std::make_unique<check::RuleNamesPass>());
   p.push_back(std::make_unique<check::ExtractPass>());
   p.push_back(std::make_unique<check::CallsPass>());
   p.push_back(std::make_unique<check::KernelsPass>());
+  p.push_back(std::make_unique<check::ContractParamsPass>());
+  p.push_back(std::make_unique<check::ModelContractPass>());
+  p.push_back(std::make_unique<check::KernelMovesPass>());
+  p.push_back(std::make_unique<check::DomainItemsPass>());
   p.push_back(std::make_unique<check::SchedulePass>());
   p.push_back(std::make_unique<check::UsagePass>());
   return p;
@@ -33,8 +38,8 @@ bool run_checks(const ast::Program& program, diag::DiagEngine& diags, check::Sym
   check::Context ctx{program, diags, {}};
   const int before = diags.error_count();
   for (const auto& pass : make_check_passes()) {
-    // Unused-declaration warnings are noise while there are errors.
-    if (pass->name() == "usage" && diags.error_count() > before) continue;
+    // Contract checks and unused-declaration warnings are noise while there are errors.
+    if (pass->needs_clean_input() && diags.error_count() > before) continue;
     pass->run(ctx);
   }
   symbols = std::move(ctx.symbols);

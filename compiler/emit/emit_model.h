@@ -1,16 +1,15 @@
-// `ksmc emit`, second half: the sampler glue of a domain.
+// `ksmc emit`, second half: the binding of a domain to its stdlib kit (docs/binding.md §3).
 //
-//   <domain>_model.h/.cpp  domain_config(): every model, extract, prior, likelihood, kernel
-//                          and schedule item of the domain file as a
-//                          ksmc::runtime::domain::DomainConfig (stdlib calls with parameters
-//                          checked against their declared signatures, defaults filled in,
-//                          numbers in base units), one statement per item with the item's
-//                          text and file:line; mln_binding(): the generated factors.
-//   <domain>_main.cpp      the entry point: the common domain CLI over the domain's stdlib
-//                          kit, configured by domain_config().
+//   <domain>_model.h/.cpp  binding(): a blocks::Binding of the kit filled from the domain file:
+//                          per `extract` a function calling the extractor it names, per
+//                          conditional prior a term function, and one statement per prior,
+//                          likelihood, output, kernel direction and schedule row, calling the
+//                          kit's blocks directly with their arguments bound in signature order,
+//                          defaults filled in, numbers in base units.
+//   <domain>_main.cpp      the entry point: the common domain CLI over the kit's domain_spec().
 //
-// One schedule row, one extractor, one kernel declaration: one line each, so editing one
-// probability or parameter in the domain file changes one line of the output.
+// Names come from the domain file only; no source line numbers appear (comments and text
+// fields hold the item as written), so an edit changes only the lines of the edited item.
 #pragma once
 
 #include <string>
