@@ -121,6 +121,7 @@ KitSetup make_setup(const blocks::Binding& binding, std::shared_ptr<const Scene>
   k.setup.kernels = std::move(table.kernels);
   k.setup.schedule = std::move(table.schedule);
   k.setup.write_results = write_outputs;
+  k.setup.evidence_db = [](rm::Model& best) { return evidence_db_of(static_cast<const TabletopModel&>(best)); };
   nlohmann::json extractors = nlohmann::json::array();
   for (const auto& e : binding.extractors) extractors.push_back(e.text);
   k.setup.summary_extra = {{"objects", scene->objects.size()},
