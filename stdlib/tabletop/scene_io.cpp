@@ -38,8 +38,10 @@ SceneObject read_object(const Reader& r, const json& j, const std::string& path,
   if (id.is_number()) {  // numeric ids are accepted and echoed back as numbers (scene_graph_json)
     o.id = id.dump();
     o.numeric_id = true;
+  } else if (id.is_string()) {
+    o.id = id.get<std::string>();
   } else {
-    o.id = r.string(id, Reader::join(path, "id"));
+    r.fail(Reader::join(path, "id"), fmt::format("expected a string or a number, got {}", id.type_name()));
   }
   if (o.id.empty()) r.fail(Reader::join(path, "id"), "empty id");
   if (o.id == kTableId) r.fail(Reader::join(path, "id"), "id \"table\" is reserved for the table");

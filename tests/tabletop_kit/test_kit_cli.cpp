@@ -142,3 +142,18 @@ TEST_CASE("bad input exits 1 naming the file") {
   CHECK(err.find("bad_scene.json") != std::string::npos);
   CHECK(run({bad.string(), "--out", out.string(), "--input-format", "xml", "-q"}, err) == 2);
 }
+
+TEST_CASE("a binding the kit cannot run is an internal error (exit 3), never an abort") {
+  static const blk::Binding broken = [] {
+    blk::Binding b = ksm_binding();
+    b.outputs[0].hidden = gen::kPred_higher;  // not a unary query
+    return b;
+  }();
+  const fs::path scene = fs::path(KSMC_SOURCE_DIR) / "examples/tabletop/stack.json";
+  const fs::path out = fs::path(KSMC_BINARY_DIR) / "tests/tabletop_kit/cli_broken";
+  std::string err;
+  CHECK(run({scene.string(), "--out", out.string(), "-q"}, err, broken) == 3);
+  CHECK(err.find("internal error") != std::string::npos);
+  CHECK(err.find("higher") != std::string::npos);
+}
+
