@@ -1,13 +1,14 @@
-// The binding of domains/tabletop.ksm written as `ksmc emit` writes it (docs/binding.md §3),
-// with the extract tolerances and likelihood settings as a type parameter, so the tests can
-// also run the seed's literal values (the calibration in docs/tabletop_kit.md). Test code:
-// the binaries use the generated binding (<domain>_model.cpp).
+// Bindings of domains/tabletop.ksm for the tests: the generated one (tabletop_model.cpp, what
+// bin/tabletop runs) and a copy written as `ksmc emit` writes it (docs/binding.md §3) with the
+// extract tolerances and likelihood settings as a type parameter, so the tests can also run
+// the seed's literal values (the calibration in docs/tabletop_kit.md) and variants.
 #pragma once
 
 #include <cstdint>
 
 #include "stdlib/tabletop/blocks.h"
 #include "tabletop_factors.h"
+#include "tabletop_model.h"
 
 namespace ksmc::tests::tabletop_kit {
 
@@ -73,8 +74,9 @@ struct Fixture {
   }
 };
 
-// Long-lived bindings (a model keeps a reference).
-inline const blk::Binding& ksm_binding() {
+// Long-lived bindings (a model keeps a reference). ksm_binding() is the generated one.
+inline const blk::Binding& ksm_binding() { return ksmc_generated::tabletop::binding(); }
+inline const blk::Binding& ksm_fixture_binding() {
   static const blk::Binding b = Fixture<KsmValues>::make();
   return b;
 }

@@ -1,5 +1,5 @@
-// Development binary `tabletop-dev`: run_domain_main + kit + the test fixture's binding of
-// domains/tabletop.ksm (binding_fixture.h), for experiments with the kit alone.
+// Development binary `tabletop-dev`: run_domain_main + kit + the generated binding of
+// domains/tabletop.ksm, built with the kit's tests (the same program as bin/tabletop).
 #include "runtime/cli/domain_main.h"
 #include "stdlib/tabletop/kit/domain_spec.h"
 #include "tests/tabletop_kit/binding_fixture.h"

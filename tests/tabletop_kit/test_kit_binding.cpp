@@ -7,6 +7,7 @@
 #include "runtime/domain/config_error.h"
 #include "stdlib/tabletop/kit/domain_spec.h"
 #include "stdlib/tabletop/kit/refine_kernel.h"
+#include "stdlib/tabletop/scene_io.h"
 #include "tests/tabletop_kit/binding_fixture.h"
 
 namespace kit = ksmc::stdlib::tabletop::kit;
@@ -26,7 +27,32 @@ std::string binding_error(const blk::Binding& b) {
 
 }  // namespace
 
-TEST_CASE("the fixture binding is one the kit runs") { CHECK(binding_error(ksm_binding()) == "(no error)"); }
+TEST_CASE("the generated binding is the fixture's copy of domains/tabletop.ksm, and the kit runs it") {
+  const blk::Binding& g = ksm_binding();
+  const blk::Binding& f = ksm_fixture_binding();
+  CHECK(binding_error(g) == "(no error)");
+  CHECK(g.domain == f.domain);
+  REQUIRE(g.extractors.size() == f.extractors.size());
+  for (std::size_t i = 0; i < g.extractors.size(); ++i) CHECK(g.extractors[i].predicate == f.extractors[i].predicate);
+  CHECK(g.likelihood.sigma_px == f.likelihood.sigma_px);
+  CHECK(g.likelihood.robust == f.likelihood.robust);
+  CHECK(g.likelihood.outlier_px == f.likelihood.outlier_px);
+  REQUIRE(g.outputs.size() == 1);
+  CHECK(g.outputs[0].false_est == f.outputs[0].false_est);
+  CHECK(g.outputs[0].hidden == f.outputs[0].hidden);
+  REQUIRE(g.kernels.size() == 1);
+  CHECK(g.kernels[0].name == f.kernels[0].name);
+  REQUIRE(g.kernels[0].sources.size() == 1);
+  CHECK(g.kernels[0].sources[0].sigma_t == f.kernels[0].sources[0].sigma_t);
+  CHECK(g.kernels[0].sources[0].sigma_r == f.kernels[0].sources[0].sigma_r);
+  CHECK(g.kernels[0].sources[0].candidates == f.kernels[0].sources[0].candidates);
+  // The extractors of both compute the same evidence on a scene.
+  const auto scene = std::make_shared<const ksmc::stdlib::tabletop::Scene>(
+      ksmc::stdlib::tabletop::load_scene(std::filesystem::path(KSMC_SOURCE_DIR) / "examples/tabletop/seed_example.json").scene);
+  const kit::TabletopModel mg(scene, g), mf(scene, f);
+  CHECK(mg.semantics().evidence_db(mg.outcome(), mg.block_scene().names()) ==
+        mf.semantics().evidence_db(mf.outcome(), mf.block_scene().names()));
+}
 
 TEST_CASE("scene.decisions must name unary query predicates over the objects") {
   blk::Binding b = ksm_binding();
