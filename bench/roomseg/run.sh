@@ -28,6 +28,7 @@ for variant in unfurnished furnished; do
     gt=$maps/${m}_gt_segmentation.png
     [ -f "$img" ] && [ -f "$gt" ] || { echo "| $m | $variant | missing input | | | | | |"; continue; }
     dir=$out/$variant/$m
+    mkdir -p "$out/$variant"
     t0=$(date +%s.%N)
     if ! "$bin" "$img" --resolution 0.05 --out "$dir" --seed 1 --iterations "$iters" --quiet "$@" > "$dir.log" 2>&1; then
       echo "| $m | $variant | run failed (see $dir.log) | | | | | |"; continue
