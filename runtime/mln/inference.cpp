@@ -37,11 +37,16 @@ InferenceResult infer(const GroundNetwork& net, const InferenceOptions& options)
   r.log_z = net.constant();
   r.log_z_exact = true;
   bool sampled = false;
+  ExactSummary summary;
   std::vector<Component> small;
+  std::vector<ExactPlan> plans;
   for (std::size_t i = 0; i < comps.size(); ++i) {
     const auto& comp = comps[i];
-    if (component_state_bits(net, comp) <= options.exact.max_component_bits + 1e-9) {
+    auto plan = plan_exact(net, comp, options.exact);
+    summary.add(plan);
+    if (plan.solver != ExactPlan::Solver::TooLarge) {
       small.push_back(comp);
+      plans.push_back(std::move(plan));
       continue;
     }
     sampled = true;
@@ -57,9 +62,9 @@ InferenceResult infer(const GroundNetwork& net, const InferenceOptions& options)
       r.log_z_exact = false;
     }
   }
-  r.log_z += exact_components(net, small, r.marginals);
+  r.log_z += solve_components(net, small, plans, r.marginals);
   if (sampled && !options.compute_log_z) r.log_z = std::numeric_limits<double>::quiet_NaN();
-  r.method = sampled ? "auto(exact+mcsat)" : "auto(exact)";
+  r.method = summary.describe();
   return r;
 }
 

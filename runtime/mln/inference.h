@@ -1,6 +1,7 @@
-// One entry point over all engines: exact, gibbs, mcsat, or auto (exact for every
-// component small enough, MC-SAT for the rest; log Z exact or AIS-estimated per
-// component). In auto mode MC-SAT runs on each large component separately, so
+// One entry point over all engines: exact, gibbs, mcsat, or auto (per component:
+// enumeration or variable elimination when either fits, by estimated cost, MC-SAT for
+// the rest; log Z exact or AIS-estimated per component; InferenceResult::method says
+// what ran, e.g. "exact:enum 3, elim 1 (width 4)" or "auto:enum 40, mcsat 1"). In auto mode MC-SAT runs on each large component separately, so
 // mcsat.on_sample is not called. MAP is separate: max_walksat() or exact_map().
 #pragma once
 

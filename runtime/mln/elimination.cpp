@@ -1,0 +1,382 @@
+#include "runtime/mln/elimination.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <limits>
+#include <string>
+
+#include "runtime/mln/error.h"
+
+namespace ksmc::runtime::mln {
+namespace {
+
+constexpr double kNegInf = -std::numeric_limits<double>::infinity();
+
+// Number of neighbour pairs of v that are not yet adjacent (the fill-in of eliminating v).
+std::int64_t fill_in(const std::vector<std::vector<std::int32_t>>& adj, std::int32_t v,
+                     std::vector<std::int32_t>& mark, std::int32_t& stamp) {
+  const auto& nb = adj[v];
+  std::int64_t missing = 0;
+  for (std::size_t i = 0; i < nb.size(); ++i) {
+    ++stamp;
+    for (std::int32_t u : adj[nb[i]]) mark[u] = stamp;
+    for (std::size_t j = i + 1; j < nb.size(); ++j) missing += mark[nb[j]] == stamp ? 0 : 1;
+  }
+  return missing;
+}
+
+// Walks every entry of a dense table over variables with `cards` (last variable
+// fastest), keeping the index into a sub-table whose stride per position is `sub`
+// (0 for a variable the sub-table does not have). f(index, sub_index, digits).
+template <typename F>
+void walk(const std::vector<std::int32_t>& cards, const std::vector<std::int64_t>& sub, F&& f) {
+  const auto n = static_cast<std::int32_t>(cards.size());
+  std::vector<std::int32_t> digit(static_cast<std::size_t>(n), 0);
+  std::int64_t size = 1;
+  for (auto c : cards) size *= c;
+  std::int64_t s = 0;
+  for (std::int64_t idx = 0; idx < size; ++idx) {
+    f(idx, s, digit);
+    for (std::int32_t p = n - 1; p >= 0; --p) {
+      s += sub[p];
+      if (++digit[p] < cards[p]) break;
+      s -= sub[p] * cards[p];
+      digit[p] = 0;
+    }
+  }
+}
+
+class JunctionTree {
+ public:
+  JunctionTree(const GroundNetwork& net, const Component& comp, const EliminationPlan& plan)
+      : net_(net), comp_(comp), plan_(plan) {
+    const auto n = static_cast<std::size_t>(plan.num_vars());
+    cards_.resize(n);
+    size_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      for (std::int32_t v : plan.scope[i]) cards_[i].push_back(plan.card(v));
+      std::int64_t s = 1;
+      for (auto c : cards_[i]) s *= c;
+      size_[i] = s;
+    }
+    // local atom -> (variable, value meaning "true")
+    atom_var_.assign(comp.atoms.size(), -1);
+    atom_val_.assign(comp.atoms.size(), 1);
+    for (std::int32_t v = 0; v < plan.num_vars(); ++v) {
+      const std::int32_t k = plan.var_offsets[v + 1] - plan.var_offsets[v];
+      for (std::int32_t j = 0; j < k; ++j) {
+        const auto li = local(plan.var_atoms[plan.var_offsets[v] + j]);
+        atom_var_[li] = v;
+        atom_val_[li] = k == 1 ? 1 : j;
+      }
+    }
+  }
+
+  // Sum-product: returns log Z, writes marginals.
+  double sum_product(std::vector<double>& marg) {
+    build_potentials();
+    const auto n = static_cast<std::size_t>(plan_.num_vars());
+    std::vector<std::vector<double>> beta = psi_;
+    std::vector<double> scale = psi_scale_;
+    std::vector<std::vector<double>> mu(n);
+    double log_z = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      scale[i] += normalise(beta[i]);
+      const auto sep = sep_strides(i, i);
+      mu[i].assign(static_cast<std::size_t>(sep_size(i)), 0.0);
+      walk(cards_[i], sep, [&](std::int64_t idx, std::int64_t s, const auto&) { mu[i][s] += beta[i][idx]; });
+      const double m = *std::max_element(mu[i].begin(), mu[i].end());
+      if (!(m > 0.0)) throw infeasible();
+      for (double& x : mu[i]) x /= m;
+      const std::int32_t p = plan_.parent[i];
+      if (p < 0) {
+        log_z += scale[i] + std::log(m);
+        continue;
+      }
+      scale[p] += scale[i] + std::log(m);
+      walk(cards_[p], sep_strides(p, i), [&](std::int64_t idx, std::int64_t s, const auto&) { beta[p][idx] *= mu[i][s]; });
+    }
+    for (std::size_t r = n; r-- > 0;) {
+      const std::int32_t p = plan_.parent[r];
+      if (p >= 0) {
+        std::vector<double> delta(mu[r].size(), 0.0);
+        walk(cards_[p], sep_strides(p, r), [&](std::int64_t idx, std::int64_t s, const auto&) { delta[s] += beta[p][idx]; });
+        walk(cards_[r], sep_strides(r, r), [&](std::int64_t idx, std::int64_t s, const auto&) {
+          beta[r][idx] = mu[r][s] > 0.0 ? beta[r][idx] * delta[s] / mu[r][s] : 0.0;
+        });
+        normalise(beta[r]);
+      }
+      marginal_of(r, beta[r], marg);
+    }
+    return log_z;
+  }
+
+  // Max-product with back-pointers: a most probable state of the component.
+  void max_product(std::vector<std::uint8_t>& mode, double* mode_lw) {
+    if (psi_.empty()) build_potentials();
+    const auto n = static_cast<std::size_t>(plan_.num_vars());
+    std::vector<std::vector<double>> beta = psi_;
+    std::vector<std::vector<std::int32_t>> arg(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      normalise(beta[i]);
+      const auto sep = sep_strides(i, i);
+      const std::int32_t pos = position(i, plan_.order[i]);
+      std::vector<double> m(static_cast<std::size_t>(sep_size(i)), -1.0);
+      arg[i].assign(m.size(), 0);
+      walk(cards_[i], sep, [&](std::int64_t idx, std::int64_t s, const auto& digit) {
+        if (beta[i][idx] > m[s]) {
+          m[s] = beta[i][idx];
+          arg[i][s] = digit[pos];
+        }
+      });
+      const double mx = *std::max_element(m.begin(), m.end());
+      if (!(mx > 0.0)) throw infeasible();
+      const std::int32_t p = plan_.parent[i];
+      if (p < 0) continue;
+      for (double& x : m) x /= mx;
+      walk(cards_[p], sep_strides(p, i), [&](std::int64_t idx, std::int64_t s, const auto&) { beta[p][idx] *= m[s]; });
+    }
+    std::vector<std::int32_t> value(n, 0);
+    for (std::size_t r = n; r-- > 0;) {  // separator variables are eliminated later: known
+      std::int64_t s = 0;
+      const auto& sc = plan_.scope[r];
+      for (std::size_t k = 0; k < sc.size(); ++k) {
+        if (sc[k] == plan_.order[r]) continue;
+        s = s * cards_[r][k] + value[sc[k]];
+      }
+      value[plan_.order[r]] = arg[r][s];
+    }
+    double lw = 0.0;
+    for (std::size_t li = 0; li < comp_.atoms.size(); ++li) {
+      const bool on = value[atom_var_[li]] == atom_val_[li];
+      mode[comp_.atoms[li]] = on ? 1 : 0;
+    }
+    for (std::int32_t c : comp_.clauses) {
+      if (net_.is_hard(c)) continue;
+      for (Lit l : net_.clause(c)) {
+        if (lit_true(l, mode[lit_atom(l)])) {
+          lw += net_.weight(c);
+          break;
+        }
+      }
+    }
+    if (mode_lw) *mode_lw = lw;
+  }
+
+ private:
+  std::size_t local(AtomId a) const {
+    return static_cast<std::size_t>(std::lower_bound(comp_.atoms.begin(), comp_.atoms.end(), a) - comp_.atoms.begin());
+  }
+  std::int32_t position(std::size_t cluster, std::int32_t var) const {
+    const auto& sc = plan_.scope[cluster];
+    return static_cast<std::int32_t>(std::lower_bound(sc.begin(), sc.end(), var) - sc.begin());
+  }
+  std::int64_t sep_size(std::size_t i) const { return size_[i] / plan_.card(plan_.order[i]); }
+
+  // Strides, per position of cluster `table`'s scope, of the separator of cluster `child`
+  // (its scope without its eliminated variable), laid out in ascending variable order.
+  std::vector<std::int64_t> sep_strides(std::size_t table, std::size_t child) const {
+    const auto& sc = plan_.scope[table];
+    const auto& cs = plan_.scope[child];
+    const std::int32_t skip = plan_.order[child];
+    std::vector<std::int64_t> st(sc.size(), 0);
+    std::int64_t stride = 1;
+    for (std::size_t k = cs.size(); k-- > 0;) {
+      if (cs[k] == skip) continue;
+      st[static_cast<std::size_t>(position(table, cs[k]))] = stride;
+      stride *= plan_.card(cs[k]);
+    }
+    return st;
+  }
+
+  // Scales t to max 1; returns the log of the factor taken out.
+  static double normalise(std::vector<double>& t) {
+    const double m = *std::max_element(t.begin(), t.end());
+    if (!(m > 0.0)) return 0.0;
+    for (double& x : t) x /= m;
+    return std::log(m);
+  }
+
+  void build_potentials() {
+    const auto n = static_cast<std::size_t>(plan_.num_vars());
+    psi_.resize(n);
+    psi_scale_.assign(n, 0.0);
+    struct Test {
+      std::int32_t pos, value;
+      bool negated;
+    };
+    std::vector<Test> tests;
+    for (std::size_t i = 0; i < n; ++i) {
+      std::vector<double> lp(static_cast<std::size_t>(size_[i]), 0.0);
+      for (std::int32_t c : plan_.clauses[i]) {
+        tests.clear();
+        for (Lit l : net_.clause(c)) {
+          const auto li = local(lit_atom(l));
+          tests.push_back({position(i, atom_var_[li]), atom_val_[li], lit_negated(l)});
+        }
+        const bool hard = net_.is_hard(c);
+        const double w = hard ? 0.0 : net_.weight(c);
+        const std::vector<std::int64_t> none(cards_[i].size(), 0);
+        walk(cards_[i], none, [&](std::int64_t idx, std::int64_t, const auto& digit) {
+          bool sat = false;
+          for (const auto& t : tests) {
+            if ((digit[t.pos] == t.value) != t.negated) { sat = true; break; }
+          }
+          if (hard) { if (!sat) lp[idx] = kNegInf; }
+          else if (sat) lp[idx] += w;
+        });
+      }
+      const double mx = *std::max_element(lp.begin(), lp.end());
+      if (mx == kNegInf) throw infeasible();
+      psi_[i].resize(lp.size());
+      for (std::size_t k = 0; k < lp.size(); ++k) psi_[i][k] = std::exp(lp[k] - mx);
+      psi_scale_[i] = mx;
+    }
+  }
+
+  void marginal_of(std::size_t i, const std::vector<double>& belief, std::vector<double>& marg) const {
+    const std::int32_t v = plan_.order[i];
+    const auto pos = static_cast<std::size_t>(position(i, v));
+    std::vector<std::int64_t> st(cards_[i].size(), 0);
+    st[pos] = 1;
+    std::vector<double> m(static_cast<std::size_t>(plan_.card(v)), 0.0);
+    walk(cards_[i], st, [&](std::int64_t idx, std::int64_t s, const auto&) { m[s] += belief[idx]; });
+    double z = 0.0;
+    for (double x : m) z += x;
+    const std::int32_t k = plan_.var_offsets[v + 1] - plan_.var_offsets[v];
+    for (std::int32_t j = 0; j < k; ++j) {
+      const double p = k == 1 ? m[1] / z : m[j] / z;
+      marg[plan_.var_atoms[plan_.var_offsets[v] + j]] = std::clamp(p, 0.0, 1.0);
+    }
+  }
+
+  MlnError infeasible() const {
+    std::string rules;
+    for (std::int32_t c : comp_.clauses) {
+      if (!net_.is_hard(c)) continue;
+      const auto name = net_.origin_name(c);
+      if (rules.find(name) == std::string::npos) rules += (rules.empty() ? "" : ", ") + name;
+    }
+    if (!comp_.blocks.empty()) rules += std::string(rules.empty() ? "" : ", ") + "exactly-one blocks";
+    return MlnError("exact inference: no state satisfies the hard constraints (" + rules + ") over a component of " +
+                    std::to_string(comp_.atoms.size()) + " atoms");
+  }
+
+  const GroundNetwork& net_;
+  const Component& comp_;
+  const EliminationPlan& plan_;
+  std::vector<std::vector<std::int32_t>> cards_;
+  std::vector<std::int64_t> size_;
+  std::vector<std::int32_t> atom_var_, atom_val_;
+  std::vector<std::vector<double>> psi_;
+  std::vector<double> psi_scale_;
+};
+
+}  // namespace
+
+EliminationPlan plan_elimination(const GroundNetwork& net, const Component& comp, double entry_limit) {
+  EliminationPlan plan;
+  std::vector<std::int32_t> var_of_local(comp.atoms.size(), -1);
+  auto local = [&](AtomId a) {
+    return static_cast<std::size_t>(std::lower_bound(comp.atoms.begin(), comp.atoms.end(), a) - comp.atoms.begin());
+  };
+  for (std::size_t i = 0; i < comp.atoms.size(); ++i) {
+    if (net.block_of(comp.atoms[i]) >= 0) continue;
+    var_of_local[i] = plan.num_vars();
+    plan.var_atoms.push_back(comp.atoms[i]);
+    plan.var_offsets.push_back(static_cast<std::int32_t>(plan.var_atoms.size()));
+  }
+  for (std::int32_t b : comp.blocks) {
+    const std::int32_t v = plan.num_vars();
+    for (AtomId a : net.block(b)) {
+      var_of_local[local(a)] = v;
+      plan.var_atoms.push_back(a);
+    }
+    plan.var_offsets.push_back(static_cast<std::int32_t>(plan.var_atoms.size()));
+  }
+  const auto n = static_cast<std::size_t>(plan.num_vars());
+  // Variables of each clause and the interaction graph.
+  std::vector<std::vector<std::int32_t>> cvars(comp.clauses.size());
+  std::vector<std::vector<std::int32_t>> adj(n);
+  for (std::size_t k = 0; k < comp.clauses.size(); ++k) {
+    auto& vs = cvars[k];
+    for (Lit l : net.clause(comp.clauses[k])) vs.push_back(var_of_local[local(lit_atom(l))]);
+    std::sort(vs.begin(), vs.end());
+    vs.erase(std::unique(vs.begin(), vs.end()), vs.end());
+    for (std::int32_t a : vs)
+      for (std::int32_t b : vs)
+        if (a != b) adj[a].push_back(b);
+  }
+  for (auto& nb : adj) {
+    std::sort(nb.begin(), nb.end());
+    nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
+  }
+  // Greedy min-fill.
+  std::vector<std::int32_t> mark(n, 0);
+  std::int32_t stamp = 0;
+  std::vector<std::int64_t> fill(n);
+  for (std::size_t v = 0; v < n; ++v) fill[v] = fill_in(adj, static_cast<std::int32_t>(v), mark, stamp);
+  std::vector<std::uint8_t> alive(n, 1);
+  std::vector<std::int32_t> step_of(n, -1), merged, touched;
+  for (std::size_t step = 0; step < n; ++step) {
+    std::int32_t best = -1;
+    for (std::size_t v = 0; v < n; ++v) {
+      if (!alive[v]) continue;
+      if (best < 0 || fill[v] < fill[best] || (fill[v] == fill[best] && adj[v].size() < adj[best].size()))
+        best = static_cast<std::int32_t>(v);
+    }
+    const std::vector<std::int32_t> nb = adj[best];
+    std::vector<std::int32_t> scope = nb;
+    scope.insert(std::lower_bound(scope.begin(), scope.end(), best), best);
+    double entries = 1.0;
+    for (std::int32_t v : scope) entries *= plan.card(v);
+    plan.width = std::max(plan.width, static_cast<std::int32_t>(scope.size()) - 1);
+    plan.max_entries = std::max(plan.max_entries, entries);
+    plan.total_entries += entries;
+    if (entries > entry_limit) return plan;
+    plan.order.push_back(best);
+    plan.scope.push_back(std::move(scope));
+    step_of[best] = static_cast<std::int32_t>(step);
+    alive[best] = 0;
+    touched.clear();
+    for (std::int32_t a : nb) {
+      merged.clear();
+      std::set_union(adj[a].begin(), adj[a].end(), nb.begin(), nb.end(), std::back_inserter(merged));
+      merged.erase(std::remove_if(merged.begin(), merged.end(), [&](std::int32_t u) { return u == a || u == best; }),
+                   merged.end());
+      adj[a].swap(merged);
+      touched.push_back(a);
+      touched.insert(touched.end(), adj[a].begin(), adj[a].end());
+    }
+    std::sort(touched.begin(), touched.end());
+    touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+    for (std::int32_t u : touched) fill[u] = fill_in(adj, u, mark, stamp);
+  }
+  plan.parent.assign(n, -1);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::int32_t p = -1;
+    for (std::int32_t u : plan.scope[i])
+      if (u != plan.order[i] && (p < 0 || step_of[u] < p)) p = step_of[u];
+    plan.parent[i] = p;
+  }
+  plan.clauses.assign(n, {});
+  for (std::size_t k = 0; k < comp.clauses.size(); ++k) {
+    std::int32_t first = static_cast<std::int32_t>(n);
+    for (std::int32_t v : cvars[k]) first = std::min(first, step_of[v]);
+    plan.clauses[first].push_back(comp.clauses[k]);
+  }
+  return plan;
+}
+
+double eliminate_component(const GroundNetwork& net, const Component& comp, const EliminationPlan& plan,
+                           std::vector<double>& marg, std::vector<std::uint8_t>* mode, double* mode_lw) {
+  if (static_cast<std::size_t>(plan.num_vars()) != plan.order.size())
+    throw MlnError("exact inference: elimination plan incomplete (a cluster exceeded the table limit)");
+  JunctionTree jt(net, comp, plan);
+  const double log_z = jt.sum_product(marg);
+  if (mode) jt.max_product(*mode, mode_lw);
+  return log_z;
+}
+
+}  // namespace ksmc::runtime::mln
