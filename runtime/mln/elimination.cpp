@@ -369,6 +369,35 @@ EliminationPlan plan_elimination(const GroundNetwork& net, const Component& comp
   return plan;
 }
 
+bool rebind_plan(const GroundNetwork& net, const Component& from, const Component& to, EliminationPlan& plan) {
+  if (from.atoms.size() != to.atoms.size()) return false;
+  auto position = [](const std::vector<AtomId>& atoms, AtomId a) {
+    return static_cast<std::size_t>(std::lower_bound(atoms.begin(), atoms.end(), a) - atoms.begin());
+  };
+  std::vector<std::int32_t> var_of_local(to.atoms.size(), -1);
+  for (std::int32_t v = 0; v < plan.num_vars(); ++v) {
+    for (std::int32_t k = plan.var_offsets[v]; k < plan.var_offsets[v + 1]; ++k) {
+      const auto pos = position(from.atoms, plan.var_atoms[k]);
+      plan.var_atoms[k] = to.atoms[pos];
+      var_of_local[pos] = v;
+    }
+  }
+  const auto n = static_cast<std::size_t>(plan.num_vars());
+  std::vector<std::int32_t> step_of(n, 0);
+  for (std::size_t i = 0; i < n; ++i) step_of[plan.order[i]] = static_cast<std::int32_t>(i);
+  plan.clauses.assign(n, {});
+  for (std::int32_t c : to.clauses) {
+    std::int32_t first = static_cast<std::int32_t>(n);
+    for (Lit l : net.clause(c)) first = std::min(first, step_of[var_of_local[position(to.atoms, lit_atom(l))]]);
+    const auto& sc = plan.scope[first];
+    for (Lit l : net.clause(c)) {
+      if (!std::binary_search(sc.begin(), sc.end(), var_of_local[position(to.atoms, lit_atom(l))])) return false;
+    }
+    plan.clauses[first].push_back(c);
+  }
+  return true;
+}
+
 double eliminate_component(const GroundNetwork& net, const Component& comp, const EliminationPlan& plan,
                            std::vector<double>& marg, std::vector<std::uint8_t>* mode, double* mode_lw) {
   if (static_cast<std::size_t>(plan.num_vars()) != plan.order.size())

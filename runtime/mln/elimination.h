@@ -53,6 +53,12 @@ struct EliminationPlan {
 EliminationPlan plan_elimination(const GroundNetwork& net, const Component& comp,
                                  double entry_limit = 1e300);
 
+// Moves a plan made for component `from` onto `to`, a component (of `net`) with the same
+// variables: from.atoms[k] and to.atoms[k] are the same atom, and blocks match. Assigns
+// to's clauses to clusters; returns false (plan unusable) when a clause's variables are
+// in no single cluster.
+bool rebind_plan(const GroundNetwork& net, const Component& from, const Component& to, EliminationPlan& plan);
+
 // Marginals (written into marg[atom], global ids) and the component's log Z (without
 // the network constant). If `mode` is given, also a most probable state of the
 // component into (*mode)[atom] and its log-weight into *mode_lw. Throws MlnError if no

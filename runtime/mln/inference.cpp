@@ -13,6 +13,20 @@ Method parse_method(const std::string& name) {
   throw MlnError("unknown inference method '" + name + "' (expected exact, gibbs, mcsat or auto)");
 }
 
+double sample_component(const GroundNetwork& net, const Component& comp, const InferenceOptions& options,
+                        std::size_t index, InferenceResult& r) {
+  const GroundNetwork sub = extract_component(net, comp);
+  McSatOptions mo = options.mcsat;
+  mo.seed = options.mcsat.seed * 1000003ULL + index;
+  mo.on_sample = nullptr;  // states of a sub-network: meaningless to the caller's observer
+  const auto sr = mc_sat(sub, mo);
+  for (std::size_t k = 0; k < comp.atoms.size(); ++k) r.marginals[comp.atoms[k]] = sr.marginals[k];
+  r.samples = std::max(r.samples, sr.samples);
+  if (!options.compute_log_z) return 0.0;
+  r.log_z_exact = false;
+  return ais_log_z(sub, options.log_z, options.log_z.seed * 1000003ULL + index).first;
+}
+
 InferenceResult infer(const GroundNetwork& net, const InferenceOptions& options) {
   switch (options.method) {
     case Method::Exact:
@@ -50,17 +64,7 @@ InferenceResult infer(const GroundNetwork& net, const InferenceOptions& options)
       continue;
     }
     sampled = true;
-    const GroundNetwork sub = extract_component(net, comp);
-    McSatOptions mo = options.mcsat;
-    mo.seed = options.mcsat.seed * 1000003ULL + i;
-    mo.on_sample = nullptr;  // states of a sub-network: meaningless to the caller's observer
-    const auto sr = mc_sat(sub, mo);
-    for (std::size_t k = 0; k < comp.atoms.size(); ++k) r.marginals[comp.atoms[k]] = sr.marginals[k];
-    r.samples = std::max(r.samples, sr.samples);
-    if (options.compute_log_z) {
-      r.log_z += ais_log_z(sub, options.log_z, options.log_z.seed * 1000003ULL + i).first;
-      r.log_z_exact = false;
-    }
+    r.log_z += sample_component(net, comp, options, i, r);
   }
   r.log_z += solve_components(net, small, plans, r.marginals);
   if (sampled && !options.compute_log_z) r.log_z = std::numeric_limits<double>::quiet_NaN();

@@ -31,4 +31,11 @@ struct InferenceOptions {
 
 InferenceResult infer(const GroundNetwork& net, const InferenceOptions& options = {});
 
+// The auto mode's sampled path for one component (`index`: its position, which seeds
+// the chains): MC-SAT marginals into r.marginals (global ids), r.samples updated; returns
+// the AIS log Z of the component (0 when !options.compute_log_z) and clears
+// r.log_z_exact when it estimated one.
+double sample_component(const GroundNetwork& net, const Component& comp, const InferenceOptions& options,
+                        std::size_t index, InferenceResult& r);
+
 }  // namespace ksmc::runtime::mln

@@ -16,6 +16,7 @@
 #include "tests/mln/floor_plan.h"
 #include "tests/mln/indoor_kb.h"
 #include "tests/mln/random_kb.h"
+#include "tests/mln/scene.h"
 #include "tests/mln/tabletop_kb.h"
 
 using namespace ksmc::runtime::mln;
@@ -160,13 +161,8 @@ TEST_CASE("elimination equals enumeration on the table-top scenes", "[mln][elimi
   ksmc::tests::mln::TabletopKb kb;
   for (const char* name : {"scene3.db", "scene7.db", "scene20.db", "scene100.db"}) {
     INFO(name);
-    const std::string path = std::string(KSMC_SOURCE_DIR) + "/tests/mln/data/" + name;
-    const auto text = read_text_file(path);
-    Domain d;
-    collect_db_constants(text, path, kb.program, d);
-    Evidence ev(kb.program, d);
-    parse_db(text, path, kb.program, d, ev);
-    check_against_enumeration(ground(kb.program, d, ev).network);
+    const auto s = ksmc::tests::mln::data_scene(kb.program, name);
+    check_against_enumeration(ground(kb.program, s.domain, *s.evidence).network);
   }
 }
 
@@ -174,25 +170,17 @@ TEST_CASE("indoor KB: elimination equals enumeration on small plans", "[mln][eli
   ksmc::tests::mln::IndoorKb kb;
   for (const auto& plan : {ksmc::tests::mln::wing_plan(5), ksmc::tests::mln::wing_plan(6),
                            ksmc::tests::mln::grid_plan(2, 3)}) {
-    const auto text = plan.db();
-    INFO(text);
-    Domain d;
-    collect_db_constants(text, "plan.db", kb.program, d);
-    Evidence ev(kb.program, d);
-    parse_db(text, "plan.db", kb.program, d, ev);
-    check_against_enumeration(ground(kb.program, d, ev).network);
+    INFO(plan.db());
+    const auto s = ksmc::tests::mln::scene_from_text(kb.program, plan.db(), "plan.db");
+    check_against_enumeration(ground(kb.program, s.domain, *s.evidence).network);
   }
 }
 
 TEST_CASE("indoor KB on a 60-unit plan: auto picks elimination and is consistent", "[mln][elimination][indoor]") {
   ksmc::tests::mln::IndoorKb kb;
   const auto plan = ksmc::tests::mln::wing_plan(60);
-  const auto text = plan.db();
-  Domain d;
-  collect_db_constants(text, "wing60.db", kb.program, d);
-  Evidence ev(kb.program, d);
-  parse_db(text, "wing60.db", kb.program, d, ev);
-  const auto g = ground(kb.program, d, ev);
+  const auto s = ksmc::tests::mln::scene_from_text(kb.program, plan.db(), "wing60.db");
+  const auto g = ground(kb.program, s.domain, *s.evidence);
   InferenceOptions opt;
   opt.method = Method::Auto;
   const auto r = infer(g.network, opt);
