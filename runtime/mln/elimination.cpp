@@ -1,8 +1,12 @@
 #include "runtime/mln/elimination.h"
 
 #include <algorithm>
+#include <array>
+#include <set>
+#include <tuple>
 #include <cmath>
 #include <iterator>
+#include <span>
 #include <limits>
 #include <string>
 
@@ -31,8 +35,12 @@ std::int64_t fill_in(const std::vector<std::vector<std::int32_t>>& adj, std::int
 // (0 for a variable the sub-table does not have). f(index, sub_index, digits).
 template <typename F>
 void walk(const std::vector<std::int32_t>& cards, const std::vector<std::int64_t>& sub, F&& f) {
+  // A cluster holds at most ~20 variables (tables are capped at 2^20-ish entries by the
+  // planner's limit), so the digits live on the stack.
+  constexpr std::size_t kMaxDigits = 64;
   const auto n = static_cast<std::int32_t>(cards.size());
-  std::vector<std::int32_t> digit(static_cast<std::size_t>(n), 0);
+  if (cards.size() > kMaxDigits) throw MlnError("exact inference: a junction-tree cluster has too many variables");
+  std::array<std::int32_t, kMaxDigits> digit{};
   std::int64_t size = 1;
   for (auto c : cards) size *= c;
   std::int64_t s = 0;
@@ -47,6 +55,19 @@ void walk(const std::vector<std::int32_t>& cards, const std::vector<std::int64_t
   }
 }
 
+// Dense tables of all clusters in one allocation.
+struct Tables {
+  std::vector<double> data;
+  std::vector<std::int64_t> off{0};
+  void add(std::int64_t size, double init) {
+    off.push_back(off.back() + size);
+    data.resize(static_cast<std::size_t>(off.back()), init);
+  }
+  std::span<double> operator[](std::size_t i) {
+    return {data.data() + off[i], data.data() + off[i + 1]};
+  }
+};
+
 class JunctionTree {
  public:
   JunctionTree(const GroundNetwork& net, const Component& comp, const EliminationPlan& plan)
@@ -59,6 +80,12 @@ class JunctionTree {
       std::int64_t s = 1;
       for (auto c : cards_[i]) s *= c;
       size_[i] = s;
+    }
+    own_sep_.resize(n);
+    parent_sep_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      own_sep_[i] = sep_strides(i, i);
+      if (plan.parent[i] >= 0) parent_sep_[i] = sep_strides(static_cast<std::size_t>(plan.parent[i]), i);
     }
     // local atom -> (variable, value meaning "true")
     atom_var_.assign(comp.atoms.size(), -1);
@@ -77,14 +104,15 @@ class JunctionTree {
   double sum_product(std::vector<double>& marg) {
     build_potentials();
     const auto n = static_cast<std::size_t>(plan_.num_vars());
-    std::vector<std::vector<double>> beta = psi_;
+    Tables beta = psi_;
     std::vector<double> scale = psi_scale_;
-    std::vector<std::vector<double>> mu(n);
+    Tables mu;
+    for (std::size_t i = 0; i < n; ++i) mu.add(sep_size(i), 0.0);
+    std::vector<double> delta;
     double log_z = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
       scale[i] += normalise(beta[i]);
-      const auto sep = sep_strides(i, i);
-      mu[i].assign(static_cast<std::size_t>(sep_size(i)), 0.0);
+      const auto& sep = own_sep_[i];
       walk(cards_[i], sep, [&](std::int64_t idx, std::int64_t s, const auto&) { mu[i][s] += beta[i][idx]; });
       const double m = *std::max_element(mu[i].begin(), mu[i].end());
       if (!(m > 0.0)) throw infeasible();
@@ -95,14 +123,14 @@ class JunctionTree {
         continue;
       }
       scale[p] += scale[i] + std::log(m);
-      walk(cards_[p], sep_strides(p, i), [&](std::int64_t idx, std::int64_t s, const auto&) { beta[p][idx] *= mu[i][s]; });
+      walk(cards_[p], parent_sep_[i], [&](std::int64_t idx, std::int64_t s, const auto&) { beta[p][idx] *= mu[i][s]; });
     }
     for (std::size_t r = n; r-- > 0;) {
       const std::int32_t p = plan_.parent[r];
       if (p >= 0) {
-        std::vector<double> delta(mu[r].size(), 0.0);
-        walk(cards_[p], sep_strides(p, r), [&](std::int64_t idx, std::int64_t s, const auto&) { delta[s] += beta[p][idx]; });
-        walk(cards_[r], sep_strides(r, r), [&](std::int64_t idx, std::int64_t s, const auto&) {
+        delta.assign(mu[r].size(), 0.0);
+        walk(cards_[p], parent_sep_[r], [&](std::int64_t idx, std::int64_t s, const auto&) { delta[s] += beta[p][idx]; });
+        walk(cards_[r], own_sep_[r], [&](std::int64_t idx, std::int64_t s, const auto&) {
           beta[r][idx] = mu[r][s] > 0.0 ? beta[r][idx] * delta[s] / mu[r][s] : 0.0;
         });
         normalise(beta[r]);
@@ -114,15 +142,16 @@ class JunctionTree {
 
   // Max-product with back-pointers: a most probable state of the component.
   void max_product(std::vector<std::uint8_t>& mode, double* mode_lw) {
-    if (psi_.empty()) build_potentials();
+    if (!built_) build_potentials();
     const auto n = static_cast<std::size_t>(plan_.num_vars());
-    std::vector<std::vector<double>> beta = psi_;
+    Tables beta = psi_;
     std::vector<std::vector<std::int32_t>> arg(n);
+    std::vector<double> m;
     for (std::size_t i = 0; i < n; ++i) {
       normalise(beta[i]);
-      const auto sep = sep_strides(i, i);
+      const auto& sep = own_sep_[i];
       const std::int32_t pos = position(i, plan_.order[i]);
-      std::vector<double> m(static_cast<std::size_t>(sep_size(i)), -1.0);
+      m.assign(static_cast<std::size_t>(sep_size(i)), -1.0);
       arg[i].assign(m.size(), 0);
       walk(cards_[i], sep, [&](std::int64_t idx, std::int64_t s, const auto& digit) {
         if (beta[i][idx] > m[s]) {
@@ -135,7 +164,7 @@ class JunctionTree {
       const std::int32_t p = plan_.parent[i];
       if (p < 0) continue;
       for (double& x : m) x /= mx;
-      walk(cards_[p], sep_strides(p, i), [&](std::int64_t idx, std::int64_t s, const auto&) { beta[p][idx] *= m[s]; });
+      walk(cards_[p], parent_sep_[i], [&](std::int64_t idx, std::int64_t s, const auto&) { beta[p][idx] *= m[s]; });
     }
     std::vector<std::int32_t> value(n, 0);
     for (std::size_t r = n; r-- > 0;) {  // separator variables are eliminated later: known
@@ -191,7 +220,7 @@ class JunctionTree {
   }
 
   // Scales t to max 1; returns the log of the factor taken out.
-  static double normalise(std::vector<double>& t) {
+  static double normalise(std::span<double> t) {
     const double m = *std::max_element(t.begin(), t.end());
     if (!(m > 0.0)) return 0.0;
     for (double& x : t) x /= m;
@@ -200,15 +229,17 @@ class JunctionTree {
 
   void build_potentials() {
     const auto n = static_cast<std::size_t>(plan_.num_vars());
-    psi_.resize(n);
+    psi_ = Tables{};
     psi_scale_.assign(n, 0.0);
+    std::vector<double> lp;
     struct Test {
       std::int32_t pos, value;
       bool negated;
     };
     std::vector<Test> tests;
+    std::vector<std::int64_t> none;
     for (std::size_t i = 0; i < n; ++i) {
-      std::vector<double> lp(static_cast<std::size_t>(size_[i]), 0.0);
+      lp.assign(static_cast<std::size_t>(size_[i]), 0.0);
       for (std::int32_t c : plan_.clauses[i]) {
         tests.clear();
         for (Lit l : net_.clause(c)) {
@@ -217,7 +248,7 @@ class JunctionTree {
         }
         const bool hard = net_.is_hard(c);
         const double w = hard ? 0.0 : net_.weight(c);
-        const std::vector<std::int64_t> none(cards_[i].size(), 0);
+        none.assign(cards_[i].size(), 0);
         walk(cards_[i], none, [&](std::int64_t idx, std::int64_t, const auto& digit) {
           bool sat = false;
           for (const auto& t : tests) {
@@ -229,13 +260,15 @@ class JunctionTree {
       }
       const double mx = *std::max_element(lp.begin(), lp.end());
       if (mx == kNegInf) throw infeasible();
-      psi_[i].resize(lp.size());
-      for (std::size_t k = 0; k < lp.size(); ++k) psi_[i][k] = std::exp(lp[k] - mx);
+      psi_.add(size_[i], 0.0);
+      auto t = psi_[i];
+      for (std::size_t k = 0; k < lp.size(); ++k) t[k] = mx == 0.0 && lp[k] == 0.0 ? 1.0 : std::exp(lp[k] - mx);
       psi_scale_[i] = mx;
     }
+    built_ = true;
   }
 
-  void marginal_of(std::size_t i, const std::vector<double>& belief, std::vector<double>& marg) const {
+  void marginal_of(std::size_t i, std::span<const double> belief, std::vector<double>& marg) const {
     const std::int32_t v = plan_.order[i];
     const auto pos = static_cast<std::size_t>(position(i, v));
     std::vector<std::int64_t> st(cards_[i].size(), 0);
@@ -269,7 +302,9 @@ class JunctionTree {
   std::vector<std::vector<std::int32_t>> cards_;
   std::vector<std::int64_t> size_;
   std::vector<std::int32_t> atom_var_, atom_val_;
-  std::vector<std::vector<double>> psi_;
+  std::vector<std::vector<std::int64_t>> own_sep_, parent_sep_;  // separator strides in own / parent table
+  Tables psi_;
+  bool built_ = false;
   std::vector<double> psi_scale_;
 };
 
@@ -317,15 +352,18 @@ EliminationPlan plan_elimination(const GroundNetwork& net, const Component& comp
   std::int32_t stamp = 0;
   std::vector<std::int64_t> fill(n);
   for (std::size_t v = 0; v < n; ++v) fill[v] = fill_in(adj, static_cast<std::int32_t>(v), mark, stamp);
-  std::vector<std::uint8_t> alive(n, 1);
   std::vector<std::int32_t> step_of(n, -1), merged, touched;
+  // Candidates by (fill-in, degree, id); entries are replaced when a score changes.
+  using Key = std::tuple<std::int64_t, std::size_t, std::int32_t>;
+  std::set<Key> queue;
+  std::vector<Key> key_of(n);
+  for (std::size_t v = 0; v < n; ++v) {
+    key_of[v] = {fill[v], adj[v].size(), static_cast<std::int32_t>(v)};
+    queue.insert(key_of[v]);
+  }
   for (std::size_t step = 0; step < n; ++step) {
-    std::int32_t best = -1;
-    for (std::size_t v = 0; v < n; ++v) {
-      if (!alive[v]) continue;
-      if (best < 0 || fill[v] < fill[best] || (fill[v] == fill[best] && adj[v].size() < adj[best].size()))
-        best = static_cast<std::int32_t>(v);
-    }
+    const std::int32_t best = std::get<2>(*queue.begin());
+    queue.erase(queue.begin());
     const std::vector<std::int32_t> nb = adj[best];
     std::vector<std::int32_t> scope = nb;
     scope.insert(std::lower_bound(scope.begin(), scope.end(), best), best);
@@ -338,7 +376,6 @@ EliminationPlan plan_elimination(const GroundNetwork& net, const Component& comp
     plan.order.push_back(best);
     plan.scope.push_back(std::move(scope));
     step_of[best] = static_cast<std::int32_t>(step);
-    alive[best] = 0;
     touched.clear();
     for (std::int32_t a : nb) {
       merged.clear();
@@ -351,7 +388,14 @@ EliminationPlan plan_elimination(const GroundNetwork& net, const Component& comp
     }
     std::sort(touched.begin(), touched.end());
     touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
-    for (std::int32_t u : touched) fill[u] = fill_in(adj, u, mark, stamp);
+    for (std::int32_t u : touched) {
+      fill[u] = fill_in(adj, u, mark, stamp);
+      const Key k{fill[u], adj[u].size(), u};
+      if (k == key_of[u]) continue;
+      queue.erase(key_of[u]);
+      key_of[u] = k;
+      queue.insert(k);
+    }
   }
   plan.parent.assign(n, -1);
   for (std::size_t i = 0; i < n; ++i) {
