@@ -277,6 +277,7 @@ void print_help(std::ostream& out) {
       << "  --seed N      infer: random seed of the sampling engines (default 1)\n"
       << "  --samples N   infer: samples of gibbs / mcsat\n"
       << "  --burn-in N   infer: burn-in of gibbs / mcsat\n"
+      << "  --result F    infer: also write the marginals to F in Alchemy's .result format\n"
       << "  --help        this text\n"
       << "  --version     print the version\n\n"
       << "exit status: 0 ok, 1 errors in the input, 2 bad usage, 3 internal compiler error\n";
@@ -299,7 +300,8 @@ int run(int argc, char** argv) {
     }
     // Options that take a value.
     static const std::vector<std::string> kValued{"--out", "-o", "--evidence", "--query", "--method",
-                                                  "--seed", "--samples", "--burn-in", "--keep", "-j"};
+                                                  "--seed", "--samples", "--burn-in", "--keep", "-j",
+                                                  "--result"};
     if (std::find(kValued.begin(), kValued.end(), a) != kValued.end()) {
       if (i + 1 >= args.size()) {
         std::cerr << "ksmc: " << a << " needs a value\n";
@@ -311,8 +313,9 @@ int run(int argc, char** argv) {
         else if (a == "--evidence") inv.infer.evidence_path = v;
         else if (a == "--method") inv.infer.method = v;
         else if (a == "--seed") inv.infer.seed = std::stoull(v);
-        else if (a == "--samples") inv.infer.samples = std::stoll(v);
-        else if (a == "--burn-in") inv.infer.burn_in = std::stoll(v);
+        else if (a == "--samples") inv.infer.samples = infer::parse_count(v);
+        else if (a == "--burn-in") inv.infer.burn_in = infer::parse_count(v);
+        else if (a == "--result") inv.infer.result_path = v;
         else if (a == "--keep") inv.keep_dir = v;
         else if (a == "-j") {
           std::size_t used = 0;
