@@ -1,36 +1,15 @@
 #include "compiler/infer/db_diagnostics.h"
 
-#include <algorithm>
-#include <cctype>
 #include <map>
 #include <string_view>
 
+#include "compiler/check/pass.h"
 #include "runtime/mln/error.h"
 
 namespace ksmc::compiler::infer {
 namespace {
 
 namespace mln = ksmc::runtime::mln;
-
-std::string lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
-
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diag = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diag = up;
-    }
-  }
-  return row[b.size()];
-}
 
 // The text between the first pair of single quotes after `marker` in `message`.
 std::string quoted_after(const std::string& message, const std::string& marker) {
@@ -74,16 +53,7 @@ std::string atom_key(std::string_view line) {
 }  // namespace
 
 std::string did_you_mean(const std::string& word, const std::vector<std::string>& candidates) {
-  const std::string lw = lower(word);
-  std::string best;
-  std::size_t best_d = std::max<std::size_t>(1, word.size() / 3) + 1;
-  for (const auto& c : candidates) {
-    const std::size_t d = lower(c) == lw ? 0 : edit_distance(lw, lower(c));
-    if (d < best_d) {
-      best_d = d;
-      best = c;
-    }
-  }
+  const std::string best = check::suggest(word, candidates);
   return best.empty() ? std::string{} : " (did you mean '" + best + "'?)";
 }
 

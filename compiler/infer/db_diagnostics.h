@@ -12,8 +12,8 @@
 
 namespace ksmc::compiler::infer {
 
-// " (did you mean 'X'?)" for the candidate closest to `word` (case-insensitive match, or
-// edit distance at most max(1, |word| / 3)); empty when none is close.
+// " (did you mean 'X'?)" for the candidate closest to `word` (check::suggest); empty when
+// none is close.
 std::string did_you_mean(const std::string& word, const std::vector<std::string>& candidates);
 
 // Adds the constants named on the good lines of `text` to `domain` (bad lines are left
