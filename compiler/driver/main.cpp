@@ -17,6 +17,7 @@
 #include "compiler/emit/emit_factors.h"
 #include "compiler/emit/emit_model.h"
 #include "compiler/fmt/formatter.h"
+#include "compiler/alchemy/mln_import.h"
 #include "compiler/infer/infer_command.h"
 #include "compiler/lower/dump_ir.h"
 #include "compiler/lower/lower_mln.h"
@@ -248,6 +249,9 @@ const std::vector<Command>& commands() {
       {"build", "ksmc build FILE -o BIN [-I DIR] [--keep DIR] [--verbose] [-j N]",
        "compile FILE into the domain binary BIN against the installed ksmc (needs CMake and a C++20 compiler)",
        cmd_build},
+      {"import-mln", "ksmc import-mln FILE.mln [--query p,q] [--out FILE.ksm]",
+       "translate an Alchemy rule base into .ksm (the --query predicates are query, the rest evidence)",
+       [](Invocation& inv) { return alchemy::run_import(inv.files, inv.infer.queries, inv.out_dir, std::cout, std::cerr); }},
       {"kit", "ksmc kit FILE", "print `<domain> <kit>`: FILE's domain name and the stdlib kit that runs it", cmd_kit},
   };
   return kCommands;
