@@ -57,6 +57,14 @@ std::string did_you_mean(const std::string& word, const std::vector<std::string>
   return best.empty() ? std::string{} : " (did you mean '" + best + "'?)";
 }
 
+std::string with_error_tag(const std::string& m, const std::string& path, const std::string& tool) {
+  const std::string prefix = path + ":";
+  std::size_t colon = std::string::npos;
+  if (m.rfind(prefix, 0) == 0) colon = m.find(": ", prefix.size() - 1);
+  if (colon != std::string::npos) return m.substr(0, colon) + ": error: " + m.substr(colon + 2);
+  return tool + ": error: " + m;
+}
+
 void collect_constants_lenient(const std::string& text, const std::string& path, const mln::Program& program,
                                mln::Domain& domain) {
   for_each_line(text, [&](std::int32_t, std::string_view line) {

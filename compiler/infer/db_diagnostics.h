@@ -16,6 +16,10 @@ namespace ksmc::compiler::infer {
 // none is close.
 std::string did_you_mean(const std::string& word, const std::vector<std::string>& candidates);
 
+// "E.db:3: message" becomes "E.db:3: error: message", like the compiler's diagnostics;
+// a message not about `path` becomes "<tool>: error: message".
+std::string with_error_tag(const std::string& message, const std::string& path, const std::string& tool);
+
 // Adds the constants named on the good lines of `text` to `domain` (bad lines are left
 // to parse_db_all, which reports them).
 void collect_constants_lenient(const std::string& text, const std::string& path,

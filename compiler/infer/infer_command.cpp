@@ -112,13 +112,8 @@ std::int64_t parse_count(const std::string& text) {
 
 namespace {
 
-// "E.db:3: message" becomes "E.db:3: error: message", like the compiler's diagnostics.
 void print_error(const std::string& m, const std::string& path, std::ostream& err) {
-  const std::string prefix = path + ":";
-  std::size_t colon = std::string::npos;
-  if (m.rfind(prefix, 0) == 0) colon = m.find(": ", prefix.size() - 1);
-  if (colon != std::string::npos) err << m.substr(0, colon) << ": error: " << m.substr(colon + 2) << "\n";
-  else err << "ksmc infer: error: " << m << "\n";
+  err << with_error_tag(m, path, "ksmc infer") << "\n";
 }
 
 }  // namespace

@@ -1,13 +1,13 @@
 # One `ksmc infer` golden case: CASE_DIR holds `args` (the domain file, then options, one per
 # line), `evidence.db`, and the expected stdout, stderr and exit code. When `args` starts
-# with `import-mln`, it is the whole `ksmc import-mln ...` command line (no evidence). Runs from the source
+# with `import-mln` or `learn`, it is that whole ksmc command line (no evidence). Runs from the source
 # folder so every path in the output is relative. UPDATE=ON rewrites the expected files.
 #   cmake -DKSMC=<ksmc> -DSOURCE_DIR=<src> -DCASE=<tests/compiler/infer/x> -DUPDATE=<ON|OFF> -P RunInferCase.cmake
 set(CASE_DIR ${SOURCE_DIR}/${CASE})
 file(STRINGS ${CASE_DIR}/args args)
 list(GET args 0 domain_file)
-if(domain_file STREQUAL "import-mln")
-  # `args` is a whole import-mln command line (no evidence)
+if(domain_file MATCHES "^(import-mln|learn)$")
+  # `args` is a whole import-mln or learn command line (no evidence)
   set(command ${KSMC} ${args})
 else()
   list(REMOVE_AT args 0)
