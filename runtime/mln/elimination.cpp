@@ -8,14 +8,13 @@
 #include <iterator>
 #include <span>
 #include <limits>
+#include <numeric>
 #include <string>
 
 #include "runtime/mln/error.h"
 
 namespace ksmc::runtime::mln {
 namespace {
-
-constexpr double kNegInf = -std::numeric_limits<double>::infinity();
 
 // Number of neighbour pairs of v that are not yet adjacent (the fill-in of eliminating v).
 std::int64_t fill_in(const std::vector<std::vector<std::int32_t>>& adj, std::int32_t v,
@@ -110,8 +109,9 @@ class JunctionTree {
     for (std::size_t i = 0; i < n; ++i) mu.add(sep_size(i), 0.0);
     std::vector<double> delta;
     double log_z = 0.0;
+    // Upward beliefs are not rescaled: psi is at most 1 and every message is scaled to
+    // max 1, and only ratios of a belief to its own upward message are used below.
     for (std::size_t i = 0; i < n; ++i) {
-      scale[i] += normalise(beta[i]);
       const auto& sep = own_sep_[i];
       walk(cards_[i], sep, [&](std::int64_t idx, std::int64_t s, const auto&) { mu[i][s] += beta[i][idx]; });
       const double m = *std::max_element(mu[i].begin(), mu[i].end());
@@ -125,17 +125,32 @@ class JunctionTree {
       scale[p] += scale[i] + std::log(m);
       walk(cards_[p], parent_sep_[i], [&](std::int64_t idx, std::int64_t s, const auto&) { beta[p][idx] *= mu[i][s]; });
     }
+    std::vector<double> acc;
     for (std::size_t r = n; r-- > 0;) {
       const std::int32_t p = plan_.parent[r];
+      const std::int32_t v = plan_.order[r];
+      const auto pos = static_cast<std::size_t>(position(r, v));
+      acc.assign(static_cast<std::size_t>(plan_.card(v)), 0.0);
+      double total = 0.0;
       if (p >= 0) {
         delta.assign(mu[r].size(), 0.0);
         walk(cards_[p], parent_sep_[r], [&](std::int64_t idx, std::int64_t s, const auto&) { delta[s] += beta[p][idx]; });
-        walk(cards_[r], own_sep_[r], [&](std::int64_t idx, std::int64_t s, const auto&) {
-          beta[r][idx] = mu[r][s] > 0.0 ? beta[r][idx] * delta[s] / mu[r][s] : 0.0;
+        walk(cards_[r], own_sep_[r], [&](std::int64_t idx, std::int64_t s, const auto& digit) {
+          const double b = mu[r][s] > 0.0 ? beta[r][idx] * delta[s] / mu[r][s] : 0.0;
+          beta[r][idx] = b;
+          acc[static_cast<std::size_t>(digit[pos])] += b;
+          total += b;
         });
-        normalise(beta[r]);
+      } else {
+        walk(cards_[r], own_sep_[r], [&](std::int64_t idx, std::int64_t, const auto& digit) {
+          acc[static_cast<std::size_t>(digit[pos])] += beta[r][idx];
+          total += beta[r][idx];
+        });
       }
-      marginal_of(r, beta[r], marg);
+      if (!(total > 0.0)) throw infeasible();
+      if (total < 1e-100 || total > 1e100)  // keep the scale of the children's messages in range
+        for (double& x : beta[r]) x /= total;
+      set_marginal(v, acc, total, marg);
     }
     return log_z;
   }
@@ -227,11 +242,15 @@ class JunctionTree {
     return std::log(m);
   }
 
+  // psi of each cluster: the product of its clauses' factors, each scaled to max 1 (a
+  // soft clause of weight w >= 0 is 1 when satisfied and e^-w when not, its w going to
+  // the cluster's log scale; w < 0: e^w when satisfied, 1 when not; hard: 1 or 0), so
+  // one exp per clause instead of one per table entry.
   void build_potentials() {
     const auto n = static_cast<std::size_t>(plan_.num_vars());
     psi_ = Tables{};
+    psi_.data.reserve(static_cast<std::size_t>(std::accumulate(size_.begin(), size_.end(), std::int64_t{0})));
     psi_scale_.assign(n, 0.0);
-    std::vector<double> lp;
     struct Test {
       std::int32_t pos, value;
       bool negated;
@@ -239,47 +258,42 @@ class JunctionTree {
     std::vector<Test> tests;
     std::vector<std::int64_t> none;
     for (std::size_t i = 0; i < n; ++i) {
-      lp.assign(static_cast<std::size_t>(size_[i]), 0.0);
+      psi_.add(size_[i], 1.0);
+      auto table = psi_[i];
       for (std::int32_t c : plan_.clauses[i]) {
         tests.clear();
         for (Lit l : net_.clause(c)) {
           const auto li = local(lit_atom(l));
           tests.push_back({position(i, atom_var_[li]), atom_val_[li], lit_negated(l)});
         }
-        const bool hard = net_.is_hard(c);
-        const double w = hard ? 0.0 : net_.weight(c);
+        double if_sat = 1.0, if_unsat = 0.0;
+        if (!net_.is_hard(c)) {
+          const double w = net_.weight(c);
+          if (w >= 0.0) {
+            if_unsat = std::exp(-w);
+            psi_scale_[i] += w;
+          } else {
+            if_sat = std::exp(w);
+            if_unsat = 1.0;
+          }
+        }
         none.assign(cards_[i].size(), 0);
         walk(cards_[i], none, [&](std::int64_t idx, std::int64_t, const auto& digit) {
           bool sat = false;
           for (const auto& t : tests) {
             if ((digit[t.pos] == t.value) != t.negated) { sat = true; break; }
           }
-          if (hard) { if (!sat) lp[idx] = kNegInf; }
-          else if (sat) lp[idx] += w;
+          table[static_cast<std::size_t>(idx)] *= sat ? if_sat : if_unsat;
         });
       }
-      const double mx = *std::max_element(lp.begin(), lp.end());
-      if (mx == kNegInf) throw infeasible();
-      psi_.add(size_[i], 0.0);
-      auto t = psi_[i];
-      for (std::size_t k = 0; k < lp.size(); ++k) t[k] = mx == 0.0 && lp[k] == 0.0 ? 1.0 : std::exp(lp[k] - mx);
-      psi_scale_[i] = mx;
     }
     built_ = true;
   }
 
-  void marginal_of(std::size_t i, std::span<const double> belief, std::vector<double>& marg) const {
-    const std::int32_t v = plan_.order[i];
-    const auto pos = static_cast<std::size_t>(position(i, v));
-    std::vector<std::int64_t> st(cards_[i].size(), 0);
-    st[pos] = 1;
-    std::vector<double> m(static_cast<std::size_t>(plan_.card(v)), 0.0);
-    walk(cards_[i], st, [&](std::int64_t idx, std::int64_t s, const auto&) { m[s] += belief[idx]; });
-    double z = 0.0;
-    for (double x : m) z += x;
+  void set_marginal(std::int32_t v, const std::vector<double>& m, double z, std::vector<double>& marg) const {
     const std::int32_t k = plan_.var_offsets[v + 1] - plan_.var_offsets[v];
     for (std::int32_t j = 0; j < k; ++j) {
-      const double p = k == 1 ? m[1] / z : m[j] / z;
+      const double p = k == 1 ? m[1] / z : m[static_cast<std::size_t>(j)] / z;
       marg[plan_.var_atoms[plan_.var_offsets[v] + j]] = std::clamp(p, 0.0, 1.0);
     }
   }
@@ -312,6 +326,7 @@ class JunctionTree {
 
 EliminationPlan plan_elimination(const GroundNetwork& net, const Component& comp, double entry_limit) {
   EliminationPlan plan;
+  plan.var_offsets.push_back(0);
   std::vector<std::int32_t> var_of_local(comp.atoms.size(), -1);
   auto local = [&](AtomId a) {
     return static_cast<std::size_t>(std::lower_bound(comp.atoms.begin(), comp.atoms.end(), a) - comp.atoms.begin());

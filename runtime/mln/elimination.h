@@ -30,7 +30,7 @@ namespace ksmc::runtime::mln {
 struct EliminationPlan {
   // Variables (local ids 0..n-1): atoms of var v are var_atoms[var_offsets[v] ..
   // var_offsets[v+1]) (one for a plain atom, the block's atoms for a block).
-  std::vector<std::int32_t> var_offsets{0};
+  std::vector<std::int32_t> var_offsets;         // empty or starting with 0
   std::vector<AtomId> var_atoms;
   std::vector<std::int32_t> order;               // elimination order (variable ids)
   std::vector<std::vector<std::int32_t>> scope;  // scope[i]: cluster of order[i], ascending var ids
@@ -40,7 +40,7 @@ struct EliminationPlan {
   double max_entries = 0.0;      // largest cluster table
   double total_entries = 0.0;    // sum of cluster tables (the cost of one pass)
 
-  std::int32_t num_vars() const { return static_cast<std::int32_t>(var_offsets.size()) - 1; }
+  std::int32_t num_vars() const { return var_offsets.empty() ? 0 : static_cast<std::int32_t>(var_offsets.size()) - 1; }
   std::int32_t card(std::int32_t v) const {
     const std::int32_t k = var_offsets[v + 1] - var_offsets[v];
     return k == 1 ? 2 : k;

@@ -22,6 +22,36 @@ std::string describe_labels(const GroundNetwork& net, std::span<const AtomId> at
   return out;
 }
 
+// A component of one free atom outside any block: closed form from its unit clauses.
+double single_atom(const GroundNetwork& net, const Component& comp, std::vector<double>& marg,
+                   std::vector<std::uint8_t>* mode, double* mode_lw) {
+  const AtomId a = comp.atoms[0];
+  double s0 = 0.0, s1 = 0.0;
+  bool allow0 = true, allow1 = true;
+  for (std::int32_t c : comp.clauses) {
+    const bool neg = lit_negated(net.clause(c)[0]);
+    if (net.is_hard(c)) (neg ? allow1 : allow0) = false;
+    else (neg ? s0 : s1) += net.weight(c);
+  }
+  if (!allow0 && !allow1) {
+    std::set<std::string> names;
+    for (std::int32_t c : comp.clauses) names.insert(net.origin_name(c));
+    std::string rules;
+    for (const auto& n : names) rules += (rules.empty() ? "" : ", ") + n;
+    throw MlnError("exact inference: no state satisfies the hard constraints (" + rules + ") over " +
+                   net.label_name(a));
+  }
+  const bool best1 = allow1 && (!allow0 || s1 > s0);
+  if (mode) (*mode)[a] = best1 ? 1 : 0;
+  if (mode_lw) *mode_lw = best1 ? s1 : s0;
+  if (!allow0) { marg[a] = 1.0; return s1; }
+  if (!allow1) { marg[a] = 0.0; return s0; }
+  const double mx = std::max(s0, s1);
+  const double e0 = std::exp(s0 - mx), e1 = std::exp(s1 - mx);
+  marg[a] = e1 / (e0 + e1);
+  return mx + std::log(e0 + e1);
+}
+
 // Enumerates components of one network in place (global atom/clause ids), reusing
 // its buffers across components: no per-component network copies.
 class Enumerator {
@@ -44,7 +74,6 @@ class Enumerator {
   // Marginals go to marg[atom] (global ids); returns the component's log Z (no constant).
   // If mode != nullptr, writes a most probable state of the component into (*mode)[atom].
   double run(const Component& comp, std::vector<double>& marg, std::vector<std::uint8_t>* mode, double* mode_lw) {
-    if (comp.atoms.size() == 1 && comp.blocks.empty()) return single(comp, marg, mode, mode_lw);
     double ref = 0.0;
     for (std::int32_t c : comp.clauses)
       if (!hard_[c]) ref += std::max(w_[c], 0.0);
@@ -84,31 +113,6 @@ class Enumerator {
   }
 
  private:
-  double single(const Component& comp, std::vector<double>& marg, std::vector<std::uint8_t>* mode,
-                double* mode_lw) const {
-    const AtomId a = comp.atoms[0];
-    double s0 = 0.0, s1 = 0.0;
-    bool allow0 = true, allow1 = true;
-    for (std::int32_t c : comp.clauses) {
-      const bool neg = lit_negated(net_.clause(c)[0]);
-      if (hard_[c]) (neg ? allow1 : allow0) = false;
-      else (neg ? s0 : s1) += w_[c];
-    }
-    if (!allow0 && !allow1) {
-      throw MlnError("exact inference: no state satisfies the hard constraints (" + hard_origins(comp) +
-                     ") over " + net_.label_name(a));
-    }
-    const bool best1 = allow1 && (!allow0 || s1 > s0);
-    if (mode) (*mode)[a] = best1 ? 1 : 0;
-    if (mode_lw) *mode_lw = best1 ? s1 : s0;
-    if (!allow0) { marg[a] = 1.0; return s1; }
-    if (!allow1) { marg[a] = 0.0; return s0; }
-    const double mx = std::max(s0, s1);
-    const double e0 = std::exp(s0 - mx), e1 = std::exp(s1 - mx);
-    marg[a] = e1 / (e0 + e1);
-    return mx + std::log(e0 + e1);
-  }
-
   void flip(AtomId a) {
     const std::uint8_t nv = val_[a] ? 0 : 1;
     if (nv) since_[a] = z_; else acc_[a] += z_ - since_[a];
@@ -285,6 +289,10 @@ double solve_components(const GroundNetwork& net, std::span<const Component> com
   for (std::size_t i = 0; i < comps.size(); ++i) {
     if (plans[i].solver == ExactPlan::Solver::Eliminate) {
       log_z += eliminate_component(net, comps[i], plans[i].elimination, marginals, mode, nullptr);
+      continue;
+    }
+    if (comps[i].atoms.size() == 1 && comps[i].blocks.empty()) {
+      log_z += single_atom(net, comps[i], marginals, mode, nullptr);
       continue;
     }
     if (!e) e.emplace(net);
