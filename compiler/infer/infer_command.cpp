@@ -9,7 +9,9 @@
 #include <stdexcept>
 
 #include "compiler/infer/db_diagnostics.h"
+#include "runtime/mln/components.h"
 #include "runtime/mln/error.h"
+#include "runtime/mln/exact.h"
 #include "runtime/mln/evidence.h"
 #include "runtime/mln/grounder.h"
 #include "runtime/mln/inference.h"
@@ -164,12 +166,22 @@ int run_infer(const lower::MlnIr& ir, const InferRequest& request, std::ostream&
     mln::InferenceResult result;
     std::string method = request.method;
     if (method == "map") {
-      mln::MapOptions o;
-      o.seed = request.seed;
-      const mln::MapResult m = mln::max_walksat(net, o);
-      if (!m.feasible) throw mln::MlnError("MaxWalkSAT found no state satisfying every hard rule");
+      // Exact (enumeration or max-product elimination per component) when every component
+      // fits; MaxWalkSAT otherwise.
+      bool exact = true;
+      for (const auto& comp : mln::split_components(net))
+        exact = exact && mln::plan_exact(net, comp, {}).solver != mln::ExactPlan::Solver::TooLarge;
+      mln::MapResult m;
+      if (exact) {
+        m = mln::exact_map(net);
+      } else {
+        mln::MapOptions o;
+        o.seed = request.seed;
+        m = mln::max_walksat(net, o);
+        if (!m.feasible) throw mln::MlnError("MaxWalkSAT found no state satisfying every hard rule");
+      }
       result.marginals.assign(m.state.begin(), m.state.end());
-      result.method = "map";
+      method = exact ? "map (exact)" : "map (maxwalksat)";
     } else {
       mln::InferenceOptions o;
       o.method = mln::parse_method(method);
