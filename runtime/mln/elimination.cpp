@@ -392,14 +392,21 @@ EliminationPlan plan_elimination(const GroundNetwork& net, const Component& comp
     plan.scope.push_back(std::move(scope));
     step_of[best] = static_cast<std::int32_t>(step);
     touched.clear();
+    // Without fill-in (v simplicial) no edge is added, so only v's neighbours change
+    // score; otherwise also the neighbours of the new edges' ends.
+    const bool new_edges = fill[best] > 0;
     for (std::int32_t a : nb) {
       merged.clear();
-      std::set_union(adj[a].begin(), adj[a].end(), nb.begin(), nb.end(), std::back_inserter(merged));
-      merged.erase(std::remove_if(merged.begin(), merged.end(), [&](std::int32_t u) { return u == a || u == best; }),
-                   merged.end());
+      if (new_edges) {
+        std::set_union(adj[a].begin(), adj[a].end(), nb.begin(), nb.end(), std::back_inserter(merged));
+        merged.erase(std::remove_if(merged.begin(), merged.end(), [&](std::int32_t u) { return u == a || u == best; }),
+                     merged.end());
+      } else {
+        std::remove_copy(adj[a].begin(), adj[a].end(), std::back_inserter(merged), best);
+      }
       adj[a].swap(merged);
       touched.push_back(a);
-      touched.insert(touched.end(), adj[a].begin(), adj[a].end());
+      if (new_edges) touched.insert(touched.end(), adj[a].begin(), adj[a].end());
     }
     std::sort(touched.begin(), touched.end());
     touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
