@@ -300,6 +300,8 @@ void print_help(std::ostream& out) {
       << "  --samples N   infer: samples of gibbs / mcsat\n"
       << "  --burn-in N   infer: burn-in of gibbs / mcsat\n"
       << "  --result F    infer: also write the marginals to F in Alchemy's .result format\n"
+      << "  --data        learn: the files that follow are training worlds (.db)\n"
+      << "  --l2 SIGMA    learn: standard deviation of the Gaussian prior on the weights (default 10)\n"
       << "  --help        this text\n"
       << "  --version     print the version\n\n"
       << "exit status: 0 ok, 1 errors in the input, 2 bad usage, 3 internal compiler error\n";
