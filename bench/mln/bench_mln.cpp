@@ -2,7 +2,9 @@
 // domains/tabletop.ksm, grounded by the code `ksmc emit` generates from it) of 7, 20 and
 // 100 objects, for grounding+folding and each engine, and on the indoor knowledge base
 // (domains/indoor.ksm) with 20 units; median of several runs, and the max marginal error
-// against exact inference (indoor: against a long Gibbs run, exact being out of reach).
+// against exact inference. Then the indoor knowledge base on 60-unit floor plans
+// (tests/mln/floor_plan.h): exact inference by variable elimination, exact MAP by
+// max-product, and incremental re-inference after one unit moved.
 //
 // usage: bench_mln [runs=7]
 #include <algorithm>
@@ -16,14 +18,18 @@
 
 #include "runtime/mln/error.h"
 #include "runtime/mln/exact.h"
+#include "runtime/mln/components.h"
+#include "runtime/mln/elimination.h"
 #include "runtime/mln/gibbs.h"
 #include "runtime/mln/grounder.h"
+#include "runtime/mln/incremental.h"
 #include "runtime/mln/inference.h"
 #include "runtime/mln/log_z.h"
 #include "runtime/mln/maxwalksat.h"
 #include "runtime/mln/mcsat.h"
 #include "indoor_factors.h"
 #include "tabletop_factors.h"
+#include "tests/mln/floor_plan.h"
 
 using namespace ksmc::runtime::mln;
 
@@ -96,10 +102,8 @@ void bench_indoor(int runs) {
   std::printf("\nbench_mln: indoor KB (DESIGN section 6), %d units, median of %d runs, CPU time per call in microseconds\n",
               kUnits, runs);
   std::printf("%-8s %5s %6s %-34s %12s %10s\n", "units", "atoms", "clauses", "step", "time_us", "max_err");
-  GibbsOptions ref_options;
-  ref_options.burn_in = 1000;
-  ref_options.samples = 200000;
-  const auto reference = gibbs_sampling(net, ref_options);
+  const auto reference = exact_inference(net);
+  std::printf("exact method: %s\n", reference.method.c_str());
   auto row = [&](const std::string& step, double us, double err) {
     if (err < 0) std::printf("%-8d %5d %6d %-34s %12.2f %10s\n", kUnits, net.num_atoms(), net.num_clauses(), step.c_str(), us, "-");
     else std::printf("%-8d %5d %6d %-34s %12.2f %10.4f\n", kUnits, net.num_atoms(), net.num_clauses(), step.c_str(), us, err);
@@ -129,7 +133,53 @@ void bench_indoor(int runs) {
   }
   MapOptions mapo;
   row("map (maxwalksat)", median_us(runs, [&] { keep(max_walksat(net, mapo)); }), -1);
-  std::printf("max_err (indoor): max |marginal - reference| with the reference a Gibbs run of 200000 sweeps\n");
+  std::printf("max_err (indoor): max |marginal - exact|\n");
+}
+
+// The indoor knowledge base on a floor plan: grounding, exact inference (the auto
+// choice: elimination for the plan's component), the elimination plan alone, exact
+// MAP, and incremental re-inference after one room's geometry changed (room-like <->
+// hall-like, alternately), including its re-grounding.
+void bench_plan(int runs, const std::string& name, const ksmc::tests::mln::FloorPlan& plan) {
+  namespace indoor = ksmc_generated::indoor;
+  const Program& program = indoor::program();
+  Domain domain = indoor::make_domain();
+  const std::string text = plan.db();
+  collect_db_constants(text, name, program, domain);
+  Evidence ev(program, domain);
+  parse_db(text, name, program, domain, ev);
+  const auto g = indoor::ground(domain, ev);
+  const auto& net = g.network;
+  const auto exact = exact_inference(net);
+  std::printf("\n%s: %d units, %zu adjacent pairs, exact method: %s\n", name.c_str(), plan.units,
+              plan.adjacent.size(), exact.method.c_str());
+  auto row = [&](const std::string& step, double us) {
+    std::printf("%-8d %5d %6d %-34s %12.2f\n", plan.units, net.num_atoms(), net.num_clauses(), step.c_str(), us);
+  };
+  row("ground+fold (generated code)", median_us(runs, [&] { keep(indoor::ground(domain, ev)); }));
+  const auto comps = split_components(net);
+  std::size_t big = 0;
+  for (std::size_t i = 0; i < comps.size(); ++i)
+    if (comps[i].atoms.size() > comps[big].atoms.size()) big = i;
+  const auto eplan = plan_elimination(net, comps[big]);
+  std::printf("largest component: %zu atoms, %zu clauses, %.0f state bits; elimination width %d, %.0f table entries\n",
+              comps[big].atoms.size(), comps[big].clauses.size(), component_state_bits(net, comps[big]), eplan.width,
+              eplan.total_entries);
+  row("min-fill plan (largest component)", median_us(runs, [&] { keep(plan_elimination(net, comps[big])); }));
+  row("exact (marginals + log Z)", median_us(runs, [&] { keep(exact_inference(net)); }));
+  row("exact MAP (max-product)", median_us(runs, [&] { keep(exact_map(net)); }));
+  const auto unit = *domain.find(indoor::kType_unit, "U12");
+  IncrementalInference inc(program, domain, ev, {},
+                           [](const Domain& d, const Evidence& e) { return indoor::ground(d, e); });
+  bool hall = false;
+  const double us = median_us(runs, [&] {
+    hall = !hall;
+    const EvidenceChange moved[] = {{indoor::kPred_RoLi, {unit}, static_cast<std::int8_t>(hall ? 0 : 1)},
+                                    {indoor::kPred_HaLi, {unit}, static_cast<std::int8_t>(hall ? 1 : 0)}};
+    keep(inc.update(moved));
+  });
+  row("incremental: one unit moved", us);
+  std::printf("incremental: %s (plan reused: %d)\n", inc.result().method.c_str(), inc.stats().plans_reused);
 }
 
 }  // namespace
@@ -196,5 +246,7 @@ int main(int argc, char** argv) {
   }
   std::printf("max_err: max |marginal - exact| over atoms (for log Z: |estimate - exact|)\n");
   bench_indoor(runs);
+  bench_plan(runs, "wing60 (corridor with rooms on both sides)", ksmc::tests::mln::wing_plan(60));
+  bench_plan(runs, "grid 6x10 (every unit adjacent to 4 neighbours)", ksmc::tests::mln::grid_plan(6, 10));
   return 0;
 }

@@ -34,6 +34,13 @@ class VariableTypesPass final : public Pass {
   void run(Context& ctx) override;
 };
 
+// A capitalised rule argument that no type declares as a constant (never a variable).
+class RuleConstantsPass final : public Pass {
+ public:
+  [[nodiscard]] std::string_view name() const override { return "rule-constants"; }
+  void run(Context& ctx) override;
+};
+
 // Rule weights: `prob` in (0, 1), no weight on hard rules, every rule weighted.
 class WeightsPass final : public Pass {
  public:

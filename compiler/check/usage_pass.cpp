@@ -57,6 +57,13 @@ void UsagePass::run(Context& ctx) {
   }
 
   const ast::Module& main = ctx.main();
+  // A pure rule base (no model, no likelihood: run by `ksmc infer` on .db evidence) has no
+  // extractors by design.
+  bool has_model = false;
+  for (const ast::Item& item : main.items) {
+    if (std::holds_alternative<ast::ModelDecl>(item.node) || std::holds_alternative<ast::LikelihoodDecl>(item.node))
+      has_model = true;
+  }
   for (const ast::Item& item : main.items) {
     if (const auto* d = std::get_if<ast::PredDecl>(&item.node)) {
       for (const ast::PredSig& p : d->preds) {
@@ -64,7 +71,7 @@ void UsagePass::run(Context& ctx) {
           ctx.diags.warning(p.name.loc, std::string(d->query ? "query" : "evidence") + " predicate '" + p.name.name +
                                             "' is not used in any rule");
         }
-        if (!d->query && extracted.count(p.name.name) == 0) {
+        if (has_model && !d->query && extracted.count(p.name.name) == 0) {
           ctx.diags.warning(p.name.loc, "evidence predicate '" + p.name.name + "' has no extractor");
         }
       }

@@ -17,8 +17,10 @@
 #include "compiler/emit/emit_factors.h"
 #include "compiler/emit/emit_model.h"
 #include "compiler/fmt/formatter.h"
+#include "compiler/alchemy/mln_import.h"
 #include "compiler/infer/infer_command.h"
 #include "compiler/lower/dump_domain_ir.h"
+#include "compiler/learn/learn_command.h"
 #include "compiler/lower/dump_ir.h"
 #include "compiler/lower/lower_mln.h"
 #include "runtime/io/atomic_file.h"
@@ -41,6 +43,7 @@ struct Invocation {
   bool dump_domain_ir = false;
   std::string out_dir;      // emit --out, build -o
   infer::InferRequest infer;
+  learn::LearnRequest learn;
   std::string keep_dir;     // build --keep
   bool verbose = false;     // build --verbose
   int jobs = 0;             // build -j
@@ -219,6 +222,19 @@ int cmd_infer(Invocation& inv) {
   return infer::run_infer(ir, inv.infer, std::cout, std::cerr);
 }
 
+int cmd_learn(Invocation& inv) {
+  if (inv.files.empty()) {
+    std::cerr << "ksmc learn: give FILE.ksm --data A.db [B.db ...]\n";
+    return kExitUsage;
+  }
+  lower::MlnIr ir;
+  if (!lower_file(inv.files.front(), inv, ir)) return kExitErrors;
+  inv.learn.out_path = inv.out_dir;
+  if (inv.infer.method != "auto") inv.learn.method = inv.infer.method;
+  return learn::run_learn(ir, inv.files.front(), std::vector<std::string>(inv.files.begin() + 1, inv.files.end()),
+                          inv.learn, std::cout, std::cerr);
+}
+
 int cmd_build(Invocation& inv) {
   if (inv.files.size() != 1 || inv.out_dir.empty()) {
     std::cerr << "ksmc build: give one FILE and -o BIN\n";
@@ -255,6 +271,12 @@ const std::vector<Command>& commands() {
       {"build", "ksmc build FILE -o BIN [-I DIR] [--keep DIR] [--verbose] [-j N]",
        "compile FILE into the domain binary BIN against the installed ksmc (needs CMake and a C++20 compiler)",
        cmd_build},
+      {"import-mln", "ksmc import-mln FILE.mln [--query p,q] [--out FILE.ksm]",
+       "translate an Alchemy rule base into .ksm (the --query predicates are query, the rest evidence)",
+       [](Invocation& inv) { return alchemy::run_import(inv.files, inv.infer.queries, inv.out_dir, std::cout, std::cerr); }},
+      {"learn", "ksmc learn FILE.ksm --data A.db [B.db ...] [--method pll|cll] [--l2 SIGMA] [--out FILE]",
+       "learn FILE's soft rule weights from training worlds; writes FILE with the new weights (layout kept)",
+       cmd_learn},
       {"kit", "ksmc kit FILE", "print `<domain> <kit>`: FILE's domain name and the stdlib kit that runs it", cmd_kit},
   };
   return kCommands;
@@ -286,6 +308,9 @@ void print_help(std::ostream& out) {
       << "  --seed N      infer: random seed of the sampling engines (default 1)\n"
       << "  --samples N   infer: samples of gibbs / mcsat\n"
       << "  --burn-in N   infer: burn-in of gibbs / mcsat\n"
+      << "  --result F    infer: also write the marginals to F in Alchemy's .result format\n"
+      << "  --data        learn: the files that follow are training worlds (.db)\n"
+      << "  --l2 SIGMA    learn: standard deviation of the Gaussian prior on the weights (default 10)\n"
       << "  --help        this text\n"
       << "  --version     print the version\n\n"
       << "exit status: 0 ok, 1 errors in the input, 2 bad usage, 3 internal compiler error\n";
@@ -308,7 +333,8 @@ int run(int argc, char** argv) {
     }
     // Options that take a value.
     static const std::vector<std::string> kValued{"--out", "-o", "--evidence", "--query", "--method",
-                                                  "--seed", "--samples", "--burn-in", "--keep", "-j"};
+                                                  "--seed", "--samples", "--burn-in", "--keep", "-j",
+                                                  "--result", "--l2"};
     if (std::find(kValued.begin(), kValued.end(), a) != kValued.end()) {
       if (i + 1 >= args.size()) {
         std::cerr << "ksmc: " << a << " needs a value\n";
@@ -320,8 +346,10 @@ int run(int argc, char** argv) {
         else if (a == "--evidence") inv.infer.evidence_path = v;
         else if (a == "--method") inv.infer.method = v;
         else if (a == "--seed") inv.infer.seed = std::stoull(v);
-        else if (a == "--samples") inv.infer.samples = std::stoll(v);
-        else if (a == "--burn-in") inv.infer.burn_in = std::stoll(v);
+        else if (a == "--samples") inv.infer.samples = infer::parse_count(v);
+        else if (a == "--burn-in") inv.infer.burn_in = infer::parse_count(v);
+        else if (a == "--result") inv.infer.result_path = v;
+        else if (a == "--l2") inv.learn.prior_sigma = std::stod(v);
         else if (a == "--keep") inv.keep_dir = v;
         else if (a == "-j") {
           std::size_t used = 0;
@@ -354,6 +382,8 @@ int run(int argc, char** argv) {
       inv.check_only = true;
     } else if (a == "--verbose") {
       inv.verbose = true;
+    } else if (a == "--data") {
+      // learn: the files that follow are training worlds (they are positional anyway)
     } else if (a == "--list-passes") {
       list_passes = true;
     } else if (a == "-I") {

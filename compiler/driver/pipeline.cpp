@@ -16,6 +16,7 @@ std::vector<std::unique_ptr<check::Pass>> make_check_passes() {
   p.push_back(std::make_unique<check::NamesPass>());
   p.push_back(std::make_unique<check::ArityPass>());
   p.push_back(std::make_unique<check::VariableTypesPass>());
+  p.push_back(std::make_unique<check::RuleConstantsPass>());
   p.push_back(std::make_unique<check::WeightsPass>());
   p.push_back(std::make_unique<check::RuleNamesPass>());
   p.push_back(std::make_unique<check::ExtractPass>());

@@ -6,8 +6,12 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
+#include "compiler/infer/db_diagnostics.h"
+#include "runtime/mln/components.h"
 #include "runtime/mln/error.h"
+#include "runtime/mln/exact.h"
 #include "runtime/mln/evidence.h"
 #include "runtime/mln/grounder.h"
 #include "runtime/mln/inference.h"
@@ -89,34 +93,39 @@ std::string build_domain(const lower::MlnIr& ir, const std::string& text, const 
   const std::string atom_text = atoms.str();
 
   // Constants named in atoms join their type, except for enumerated types, whose constants
-  // are fixed by the domain file.
+  // are fixed by the domain file (an undeclared one is reported by parse_db_all, with a
+  // suggestion, together with every other bad line).
   mln::Domain seen = domain;
-  mln::collect_db_constants(atom_text, path, program, seen);
+  collect_constants_lenient(atom_text, path, program, seen);
   for (std::size_t t = 0; t < program.types.size(); ++t) {
     const auto ti = static_cast<std::int32_t>(t);
-    const bool enumerated = !ir.enumerated[t].empty();
-    for (const auto& c : seen.constants(ti)) {
-      if (domain.find(ti, c)) continue;
-      if (!enumerated) {
-        domain.add(ti, c);
-        continue;
-      }
-      // Name the first line that uses the constant.
-      std::istringstream scan(atom_text);
-      int n = 0;
-      while (std::getline(scan, line)) {
-        ++n;
-        if (line.find(c) != std::string::npos) break;
-      }
-      throw mln::MlnError(path + ":" + std::to_string(n) + ": unknown constant '" + c + "' of enumerated type '" +
-                          program.types[t] + "'");
-    }
+    if (!ir.enumerated[t].empty()) continue;
+    for (const auto& c : seen.constants(ti)) domain.add(ti, c);
   }
   return atom_text;
 }
 
+std::int64_t parse_count(const std::string& text) {
+  std::size_t used = 0;
+  const long long v = std::stoll(text, &used);
+  if (used != text.size() || v < 0) throw std::invalid_argument(text);
+  return v;
+}
+
+namespace {
+
+void print_error(const std::string& m, const std::string& path, std::ostream& err) {
+  err << with_error_tag(m, path, "ksmc infer") << "\n";
+}
+
+}  // namespace
+
 int run_infer(const lower::MlnIr& ir, const InferRequest& request, std::ostream& out, std::ostream& err) {
   const auto& program = ir.program;
+  if (request.samples == 0) {
+    err << "ksmc infer: --samples must be at least 1 (marginals from no samples are meaningless)\n";
+    return 2;
+  }
   static const std::set<std::string> kMethods{"exact", "gibbs", "mcsat", "map", "auto"};
   if (!kMethods.count(request.method)) {
     err << "ksmc infer: unknown method '" << request.method << "' (exact, gibbs, mcsat, map or auto)\n";
@@ -143,19 +152,36 @@ int run_infer(const lower::MlnIr& ir, const InferRequest& request, std::ostream&
     mln::Domain domain;
     const std::string atoms = build_domain(ir, buffer.str(), request.evidence_path, domain);
     mln::Evidence evidence(program, domain);
-    mln::parse_db(atoms, request.evidence_path, program, domain, evidence);
+    mln::DbOptions db_options;
+    db_options.allow_all_query_evidence = true;  // partial observation: given query atoms are fixed
+    const auto errors = parse_db_all(atoms, request.evidence_path, program, domain, evidence, db_options);
+    for (const auto& e : errors) print_error(e, request.evidence_path, err);
+    if (!errors.empty()) {
+      if (errors.size() > 1) err << "ksmc infer: " << errors.size() << " errors in " << request.evidence_path << "\n";
+      return 1;
+    }
     const mln::Grounding g = mln::ground(program, domain, evidence);
     const auto& net = g.network;
 
     mln::InferenceResult result;
     std::string method = request.method;
     if (method == "map") {
-      mln::MapOptions o;
-      o.seed = request.seed;
-      const mln::MapResult m = mln::max_walksat(net, o);
-      if (!m.feasible) throw mln::MlnError("MaxWalkSAT found no state satisfying every hard rule");
+      // Exact (enumeration or max-product elimination per component) when every component
+      // fits; MaxWalkSAT otherwise.
+      bool exact = true;
+      for (const auto& comp : mln::split_components(net))
+        exact = exact && mln::plan_exact(net, comp, {}).solver != mln::ExactPlan::Solver::TooLarge;
+      mln::MapResult m;
+      if (exact) {
+        m = mln::exact_map(net);
+      } else {
+        mln::MapOptions o;
+        o.seed = request.seed;
+        m = mln::max_walksat(net, o);
+        if (!m.feasible) throw mln::MlnError("MaxWalkSAT found no state satisfying every hard rule");
+      }
       result.marginals.assign(m.state.begin(), m.state.end());
-      result.method = "map";
+      method = exact ? "map (exact)" : "map (maxwalksat)";
     } else {
       mln::InferenceOptions o;
       o.method = mln::parse_method(method);
@@ -179,19 +205,21 @@ int run_infer(const lower::MlnIr& ir, const InferRequest& request, std::ostream&
     }
     std::sort(lines.begin(), lines.end());
     for (const auto& l : lines) out << l << "\n";
+    if (!request.result_path.empty()) {  // Alchemy's .result: one `atom probability` line per query atom
+      std::ofstream result_file(request.result_path, std::ios::binary);
+      for (const auto& l : lines) result_file << l << "\n";
+      if (!result_file) {
+        err << "ksmc infer: error: cannot write the result file '" << request.result_path << "'\n";
+        return 1;
+      }
+    }
     err << "ksmc infer: " << method << ", " << g.index.num_query_atoms << " query atoms (" << net.num_atoms()
         << " free), " << net.num_clauses() << " ground clauses";
     if (!std::isnan(result.log_z)) err << ", log Z " << (result.log_z_exact ? "= " : "~ ") << result.log_z;
     err << "\n";
     return 0;
   } catch (const mln::MlnError& e) {
-    // "E.db:3: message" becomes "E.db:3: error: message", like the compiler's diagnostics.
-    const std::string m = e.what();
-    const std::string prefix = request.evidence_path + ":";
-    std::size_t colon = std::string::npos;
-    if (m.rfind(prefix, 0) == 0) colon = m.find(": ", prefix.size() - 1);
-    if (colon != std::string::npos) err << m.substr(0, colon) << ": error: " << m.substr(colon + 2) << "\n";
-    else err << "ksmc infer: error: " << m << "\n";
+    print_error(e.what(), request.evidence_path, err);
     return 1;
   }
 }

@@ -20,10 +20,17 @@ struct InferRequest {
   std::string method = "auto";       // exact | gibbs | mcsat | map | auto
   std::uint64_t seed = 1;
   std::int64_t burn_in = -1;         // < 0: the engine's default
-  std::int64_t samples = -1;         // < 0: the engine's default
+  std::int64_t samples = -1;         // < 0: the engine's default; 0 is refused
+  std::string result_path;           // --result FILE: also write Alchemy's .result format there
 };
 
-// Returns the process exit code: 0 on success, 1 on bad input (message on `err`).
+// A sample or burn-in count from the command line: digits only ("1k", "-3", "" throw
+// std::invalid_argument).
+std::int64_t parse_count(const std::string& text);
+
+// Returns the process exit code: 0 on success, 1 on bad input (every bad evidence line is
+// reported on `err`), 2 on a bad option. Atoms of query predicates may be given in the
+// evidence (partial observation): they are fixed, the others inferred.
 int run_infer(const lower::MlnIr& ir, const InferRequest& request, std::ostream& out, std::ostream& err);
 
 // Builds the run-time domain of `ir` from evidence text: the enumerated types' constants,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -19,6 +20,36 @@ std::string describe_labels(const GroundNetwork& net, std::span<const AtomId> at
   std::string out;
   for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
   return out;
+}
+
+// A component of one free atom outside any block: closed form from its unit clauses.
+double single_atom(const GroundNetwork& net, const Component& comp, std::vector<double>& marg,
+                   std::vector<std::uint8_t>* mode, double* mode_lw) {
+  const AtomId a = comp.atoms[0];
+  double s0 = 0.0, s1 = 0.0;
+  bool allow0 = true, allow1 = true;
+  for (std::int32_t c : comp.clauses) {
+    const bool neg = lit_negated(net.clause(c)[0]);
+    if (net.is_hard(c)) (neg ? allow1 : allow0) = false;
+    else (neg ? s0 : s1) += net.weight(c);
+  }
+  if (!allow0 && !allow1) {
+    std::set<std::string> names;
+    for (std::int32_t c : comp.clauses) names.insert(net.origin_name(c));
+    std::string rules;
+    for (const auto& n : names) rules += (rules.empty() ? "" : ", ") + n;
+    throw MlnError("exact inference: no state satisfies the hard constraints (" + rules + ") over " +
+                   net.label_name(a));
+  }
+  const bool best1 = allow1 && (!allow0 || s1 > s0);
+  if (mode) (*mode)[a] = best1 ? 1 : 0;
+  if (mode_lw) *mode_lw = best1 ? s1 : s0;
+  if (!allow0) { marg[a] = 1.0; return s1; }
+  if (!allow1) { marg[a] = 0.0; return s0; }
+  const double mx = std::max(s0, s1);
+  const double e0 = std::exp(s0 - mx), e1 = std::exp(s1 - mx);
+  marg[a] = e1 / (e0 + e1);
+  return mx + std::log(e0 + e1);
 }
 
 // Enumerates components of one network in place (global atom/clause ids), reusing
@@ -43,7 +74,6 @@ class Enumerator {
   // Marginals go to marg[atom] (global ids); returns the component's log Z (no constant).
   // If mode != nullptr, writes a most probable state of the component into (*mode)[atom].
   double run(const Component& comp, std::vector<double>& marg, std::vector<std::uint8_t>* mode, double* mode_lw) {
-    if (comp.atoms.size() == 1 && comp.blocks.empty()) return single(comp, marg, mode, mode_lw);
     double ref = 0.0;
     for (std::int32_t c : comp.clauses)
       if (!hard_[c]) ref += std::max(w_[c], 0.0);
@@ -83,31 +113,6 @@ class Enumerator {
   }
 
  private:
-  double single(const Component& comp, std::vector<double>& marg, std::vector<std::uint8_t>* mode,
-                double* mode_lw) const {
-    const AtomId a = comp.atoms[0];
-    double s0 = 0.0, s1 = 0.0;
-    bool allow0 = true, allow1 = true;
-    for (std::int32_t c : comp.clauses) {
-      const bool neg = lit_negated(net_.clause(c)[0]);
-      if (hard_[c]) (neg ? allow1 : allow0) = false;
-      else (neg ? s0 : s1) += w_[c];
-    }
-    if (!allow0 && !allow1) {
-      throw MlnError("exact inference: no state satisfies the hard constraints (" + hard_origins(comp) +
-                     ") over " + net_.label_name(a));
-    }
-    const bool best1 = allow1 && (!allow0 || s1 > s0);
-    if (mode) (*mode)[a] = best1 ? 1 : 0;
-    if (mode_lw) *mode_lw = best1 ? s1 : s0;
-    if (!allow0) { marg[a] = 1.0; return s1; }
-    if (!allow1) { marg[a] = 0.0; return s0; }
-    const double mx = std::max(s0, s1);
-    const double e0 = std::exp(s0 - mx), e1 = std::exp(s1 - mx);
-    marg[a] = e1 / (e0 + e1);
-    return mx + std::log(e0 + e1);
-  }
-
   void flip(AtomId a) {
     const std::uint8_t nv = val_[a] ? 0 : 1;
     if (nv) since_[a] = z_; else acc_[a] += z_ - since_[a];
@@ -229,46 +234,117 @@ ComponentResult enumerate_network(const GroundNetwork& net) {
   return r;
 }
 
+ExactPlan plan_exact(const GroundNetwork& net, const Component& comp, const ExactOptions& options) {
+  ExactPlan p;
+  p.bits = component_state_bits(net, comp);
+  const bool can_enumerate = p.bits <= options.max_component_bits + 1e-9;
+  if (p.bits <= 10.0 || !options.use_elimination) {
+    p.solver = can_enumerate ? ExactPlan::Solver::Enumerate : ExactPlan::Solver::TooLarge;
+    return p;
+  }
+  p.elimination = plan_elimination(net, comp, options.max_cluster_entries);
+  const bool can_eliminate = p.elimination.order.size() == static_cast<std::size_t>(p.elimination.num_vars()) &&
+                             p.elimination.total_entries <= options.max_elimination_entries;
+  // Rough costs in table-entry operations: a Gray-code step touches a few clauses; an
+  // elimination pass visits every cluster entry about four times (potentials, up, down,
+  // marginal) plus once per assigned clause.
+  const double enum_cost = std::exp2(p.bits) * 3.0;
+  const double elim_cost = p.elimination.total_entries * 8.0;
+  if (can_eliminate && (!can_enumerate || elim_cost < enum_cost)) p.solver = ExactPlan::Solver::Eliminate;
+  else if (can_enumerate) p.solver = ExactPlan::Solver::Enumerate;
+  else p.solver = ExactPlan::Solver::TooLarge;
+  return p;
+}
+
+void ExactSummary::add(const ExactPlan& plan) {
+  switch (plan.solver) {
+    case ExactPlan::Solver::Enumerate: ++enumerated; break;
+    case ExactPlan::Solver::Eliminate:
+      ++eliminated;
+      width = std::max(width, plan.elimination.width);
+      break;
+    case ExactPlan::Solver::TooLarge: ++sampled; break;
+  }
+}
+
+std::string ExactSummary::describe() const {
+  std::string out = sampled > 0 ? "auto:" : "exact:";
+  std::string sep;
+  if (enumerated > 0 || (eliminated == 0 && sampled == 0)) {
+    out += "enum " + std::to_string(enumerated);
+    sep = ", ";
+  }
+  if (eliminated > 0) {
+    out += sep + "elim " + std::to_string(eliminated) + " (width " + std::to_string(width) + ")";
+    sep = ", ";
+  }
+  if (sampled > 0) out += sep + "mcsat " + std::to_string(sampled);
+  return out;
+}
+
+double solve_components(const GroundNetwork& net, std::span<const Component> comps, std::span<const ExactPlan> plans,
+                        std::vector<double>& marginals, std::vector<std::uint8_t>* mode) {
+  double log_z = 0.0;
+  std::optional<Enumerator> e;
+  for (std::size_t i = 0; i < comps.size(); ++i) {
+    if (plans[i].solver == ExactPlan::Solver::Eliminate) {
+      log_z += eliminate_component(net, comps[i], plans[i].elimination, marginals, mode, nullptr);
+      continue;
+    }
+    if (comps[i].atoms.size() == 1 && comps[i].blocks.empty()) {
+      log_z += single_atom(net, comps[i], marginals, mode, nullptr);
+      continue;
+    }
+    if (!e) e.emplace(net);
+    log_z += e->run(comps[i], marginals, mode, nullptr);
+  }
+  return log_z;
+}
+
 namespace {
 
-void check_sizes(const GroundNetwork& net, const std::vector<Component>& comps, const ExactOptions& options) {
+std::vector<ExactPlan> plan_all(const GroundNetwork& net, const std::vector<Component>& comps,
+                                const ExactOptions& options, ExactSummary& summary) {
+  std::vector<ExactPlan> plans;
+  plans.reserve(comps.size());
   for (const auto& comp : comps) {
-    if (component_state_bits(net, comp) > options.max_component_bits + 1e-9)
-      throw MlnError(too_large_message(net, comp, options));
+    plans.push_back(plan_exact(net, comp, options));
+    if (plans.back().solver == ExactPlan::Solver::TooLarge) throw MlnError(too_large_message(net, comp, options));
+    summary.add(plans.back());
   }
+  return plans;
 }
 
 }  // namespace
 
 InferenceResult exact_inference(const GroundNetwork& net, const ExactOptions& options) {
   const auto comps = split_components(net);
-  check_sizes(net, comps, options);
+  ExactSummary summary;
+  const auto plans = plan_all(net, comps, options, summary);
   InferenceResult r;
-  r.method = "exact";
+  r.method = summary.describe();
   r.marginals.assign(static_cast<std::size_t>(net.num_atoms()), 0.0);
-  r.log_z = net.constant();
+  r.log_z = net.constant() + solve_components(net, comps, plans, r.marginals);
   r.log_z_exact = true;
-  Enumerator e(net);
-  for (const auto& comp : comps) r.log_z += e.run(comp, r.marginals, nullptr, nullptr);
   return r;
 }
 
 double exact_components(const GroundNetwork& net, std::span<const Component> comps, std::vector<double>& marginals) {
-  if (comps.empty()) return 0.0;
-  Enumerator e(net);
-  double log_z = 0.0;
-  for (const auto& comp : comps) log_z += e.run(comp, marginals, nullptr, nullptr);
-  return log_z;
+  ExactOptions unlimited;
+  unlimited.max_component_bits = 1 << 20;
+  std::vector<ExactPlan> plans;
+  for (const auto& comp : comps) plans.push_back(plan_exact(net, comp, unlimited));
+  return solve_components(net, comps, plans, marginals);
 }
 
 MapResult exact_map(const GroundNetwork& net, const ExactOptions& options) {
   const auto comps = split_components(net);
-  check_sizes(net, comps, options);
+  ExactSummary summary;
+  const auto plans = plan_all(net, comps, options, summary);
   MapResult r;
   r.state.assign(static_cast<std::size_t>(net.num_atoms()), 0);
   std::vector<double> marg(static_cast<std::size_t>(net.num_atoms()));
-  Enumerator e(net);
-  for (const auto& comp : comps) e.run(comp, marg, &r.state, nullptr);
+  solve_components(net, comps, plans, marg, &r.state);
   r.feasible = net.feasible(r.state);
   r.log_weight = net.log_weight(r.state);
   return r;
@@ -282,7 +358,7 @@ std::string too_large_message(const GroundNetwork& net, const Component& comp,
          " bits (network: " + std::to_string(net.num_atoms()) + " atoms, " +
          std::to_string(net.num_clauses()) + " clauses); its atoms come from " +
          describe_labels(net, comp.atoms) +
-         "; use the auto or mcsat method, or raise max_component_bits";
+         "; neither enumeration nor variable elimination fits the limits; use the auto or mcsat method, or raise max_component_bits";
 }
 
 }  // namespace ksmc::runtime::mln

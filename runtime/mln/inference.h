@@ -1,6 +1,7 @@
-// One entry point over all engines: exact, gibbs, mcsat, or auto (exact for every
-// component small enough, MC-SAT for the rest; log Z exact or AIS-estimated per
-// component). In auto mode MC-SAT runs on each large component separately, so
+// One entry point over all engines: exact, gibbs, mcsat, or auto (per component:
+// enumeration or variable elimination when either fits, by estimated cost, MC-SAT for
+// the rest; log Z exact or AIS-estimated per component; InferenceResult::method says
+// what ran, e.g. "exact:enum 3, elim 1 (width 4)" or "auto:enum 40, mcsat 1"). In auto mode MC-SAT runs on each large component separately, so
 // mcsat.on_sample is not called. MAP is separate: max_walksat() or exact_map().
 #pragma once
 
@@ -29,5 +30,12 @@ struct InferenceOptions {
 };
 
 InferenceResult infer(const GroundNetwork& net, const InferenceOptions& options = {});
+
+// The auto mode's sampled path for one component (`index`: its position, which seeds
+// the chains): MC-SAT marginals into r.marginals (global ids), r.samples updated; returns
+// the AIS log Z of the component (0 when !options.compute_log_z) and clears
+// r.log_z_exact when it estimated one.
+double sample_component(const GroundNetwork& net, const Component& comp, const InferenceOptions& options,
+                        std::size_t index, InferenceResult& r);
 
 }  // namespace ksmc::runtime::mln

@@ -14,7 +14,7 @@ struct InferenceResult {
   std::vector<double> marginals;  // P(atom = true), index = network atom id
   double log_z = std::numeric_limits<double>::quiet_NaN();
   bool log_z_exact = false;       // false: estimate (or NaN if not computed)
-  std::string method;             // "exact", "gibbs", "mcsat", "auto(exact+mcsat)"
+  std::string method;             // "gibbs", "mcsat", "exact:enum 3, elim 1 (width 4)", "auto:enum 2, mcsat 1"
   std::int64_t samples = 0;       // samples behind the marginals (0 for exact)
 };
 

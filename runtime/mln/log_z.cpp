@@ -84,12 +84,17 @@ LogZResult log_partition(const GroundNetwork& net, const LogZOptions& options) {
   double var = 0.0;
   const auto comps = split_components(net);
   std::vector<Component> small;
+  std::vector<ExactPlan> plans;
   std::vector<double> marginals(static_cast<std::size_t>(net.num_atoms()));
   for (std::size_t i = 0; i < comps.size(); ++i) {
     const auto& comp = comps[i];
-    if (!options.force_ais && component_state_bits(net, comp) <= options.exact.max_component_bits + 1e-9) {
-      small.push_back(comp);
-      continue;
+    if (!options.force_ais) {
+      auto plan = plan_exact(net, comp, options.exact);
+      if (plan.solver != ExactPlan::Solver::TooLarge) {
+        small.push_back(comp);
+        plans.push_back(std::move(plan));
+        continue;
+      }
     }
     const auto [lz, se] = ais_log_z(extract_component(net, comp), options, options.seed * 1000003ULL + i);
     r.log_z += lz;
@@ -97,7 +102,7 @@ LogZResult log_partition(const GroundNetwork& net, const LogZOptions& options) {
     r.exact = false;
     ++r.estimated_components;
   }
-  r.log_z += exact_components(net, small, marginals);
+  r.log_z += solve_components(net, small, plans, marginals);
   r.std_error = std::sqrt(var);
   return r;
 }

@@ -1,13 +1,20 @@
 # One `ksmc infer` golden case: CASE_DIR holds `args` (the domain file, then options, one per
-# line), `evidence.db`, and the expected stdout, stderr and exit code. Runs from the source
+# line), `evidence.db`, and the expected stdout, stderr and exit code. When `args` starts
+# with `import-mln` or `learn`, it is that whole ksmc command line (no evidence). Runs from the source
 # folder so every path in the output is relative. UPDATE=ON rewrites the expected files.
 #   cmake -DKSMC=<ksmc> -DSOURCE_DIR=<src> -DCASE=<tests/compiler/infer/x> -DUPDATE=<ON|OFF> -P RunInferCase.cmake
 set(CASE_DIR ${SOURCE_DIR}/${CASE})
 file(STRINGS ${CASE_DIR}/args args)
 list(GET args 0 domain_file)
-list(REMOVE_AT args 0)
+if(domain_file MATCHES "^(import-mln|learn)$")
+  # `args` is a whole import-mln or learn command line (no evidence)
+  set(command ${KSMC} ${args})
+else()
+  list(REMOVE_AT args 0)
+  set(command ${KSMC} infer ${domain_file} --evidence ${CASE}/evidence.db ${args})
+endif()
 execute_process(
-  COMMAND ${KSMC} infer ${domain_file} --evidence ${CASE}/evidence.db ${args}
+  COMMAND ${command}
   WORKING_DIRECTORY ${SOURCE_DIR}
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 120)
 if(UPDATE)

@@ -116,14 +116,15 @@ TEST_CASE("exact refuses a too-large component with a clear message", "[mln][exa
   }
   ExactOptions opt;
   opt.max_component_bits = 24;
+  opt.use_elimination = false;
   try {
     exact_inference(net, opt);
     FAIL("expected MlnError");
   } catch (const MlnError& e) {
     CHECK(std::string(e.what()) ==
           "exact inference: a connected component has 30 free atoms (30 bits of state), above the limit of 24 bits "
-          "(network: 30 atoms, 29 clauses); its atoms come from chain; use the auto or mcsat method, or raise "
-          "max_component_bits");
+          "(network: 30 atoms, 29 clauses); its atoms come from chain; neither enumeration nor variable "
+          "elimination fits the limits; use the auto or mcsat method, or raise max_component_bits");
   }
 }
 

@@ -70,11 +70,12 @@ TEST_CASE("indoor KB: exact, Gibbs, MC-SAT and auto agree on a 5-unit scene", "[
   const double em = max_error(infer(net, opt).marginals, exact.marginals);
   opt.method = Method::Auto;
   opt.exact.max_component_bits = 12;  // force the sampled path
+  opt.exact.use_elimination = false;
   opt.mcsat.on_sample = nullptr;
   opt.compute_log_z = true;
   const auto au = infer(net, opt);
   const double ea = max_error(au.marginals, exact.marginals);
-  CHECK(au.method == "auto(exact+mcsat)");
+  CHECK(au.method.rfind("auto:", 0) == 0);
   CHECK(bad == 0);
   CHECK(eg < 0.02);
   CHECK(em < 0.02);

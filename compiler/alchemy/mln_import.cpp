@@ -1,0 +1,468 @@
+#include "compiler/alchemy/mln_import.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <set>
+#include <sstream>
+
+#include "compiler/check/pass.h"
+
+namespace ksmc::compiler::alchemy {
+namespace {
+
+// Words of the ksm language that cannot name a predicate, type, constant or variable.
+const std::set<std::string> kKeywords{
+    "domain", "include", "type",   "evidence", "query",    "quantity", "value",    "extern", "hard",
+    "prob",   "exactly", "one",    "of",       "exists",   "model",    "extract",  "prior",  "likelihood",
+    "kernel", "pair",    "reverse", "schedule", "for",     "where",    "and",      "set",    "inf",
+    "true",   "false",   "fixed",  "sampled",  "v"};
+
+struct Token {
+  enum Kind { Ident, Number, String, Sym, End } kind = End;
+  std::string text;
+  int col = 0;
+};
+
+// Blanks out comments, keeping line and column positions.
+std::string strip_comments(std::string text) {
+  for (std::size_t i = 0; i + 1 < text.size(); ++i) {
+    if (text[i] == '"') {
+      for (++i; i < text.size() && text[i] != '"' && text[i] != '\n'; ++i) {}
+      continue;
+    }
+    if (text[i] == '/' && text[i + 1] == '/') {
+      for (; i < text.size() && text[i] != '\n'; ++i) text[i] = ' ';
+    } else if (text[i] == '/' && text[i + 1] == '*') {
+      for (; i < text.size() && !(text[i] == '*' && i + 1 < text.size() && text[i + 1] == '/'); ++i)
+        if (text[i] != '\n') text[i] = ' ';
+      if (i < text.size()) text[i] = ' ';
+      if (i + 1 < text.size()) text[i + 1] = ' ';
+    }
+  }
+  return text;
+}
+
+struct Error {
+  int col;
+  std::string message;
+};
+
+std::vector<Token> tokenize(const std::string& line) {
+  std::vector<Token> out;
+  std::size_t i = 0;
+  auto digit = [&](std::size_t k) { return k < line.size() && std::isdigit(static_cast<unsigned char>(line[k])); };
+  while (i < line.size()) {
+    const char c = line[i];
+    const int col = static_cast<int>(i) + 1;
+    if (std::isspace(static_cast<unsigned char>(c))) { ++i; continue; }
+    if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
+      std::size_t j = i;
+      while (j < line.size() && (std::isalnum(static_cast<unsigned char>(line[j])) || line[j] == '_')) ++j;
+      out.push_back({Token::Ident, line.substr(i, j - i), col});
+      i = j;
+    } else if (digit(i) || ((c == '-' || c == '+') && (digit(i + 1) || (line[i + 1] == '.' && digit(i + 2)))) ||
+               (c == '.' && digit(i + 1))) {
+      std::size_t j = i + 1;
+      while (digit(j) || (j < line.size() && line[j] == '.' && digit(j + 1))) ++j;
+      if (j < line.size() && (line[j] == 'e' || line[j] == 'E')) {
+        std::size_t k = j + 1;
+        if (k < line.size() && (line[k] == '-' || line[k] == '+')) ++k;
+        if (digit(k)) {
+          j = k;
+          while (digit(j)) ++j;
+        }
+      }
+      out.push_back({Token::Number, line.substr(i, j - i), col});
+      i = j;
+    } else if (c == '"') {
+      const auto e = line.find('"', i + 1);
+      const std::size_t j = e == std::string::npos ? line.size() : e + 1;
+      out.push_back({Token::String, line.substr(i, j - i), col});
+      i = j;
+    } else if (line.compare(i, 3, "<=>") == 0) {
+      out.push_back({Token::Sym, "<=>", col});
+      i += 3;
+    } else if (line.compare(i, 2, "=>") == 0) {
+      out.push_back({Token::Sym, "=>", col});
+      i += 2;
+    } else {
+      out.push_back({Token::Sym, std::string(1, c), col});
+      ++i;
+    }
+  }
+  out.push_back({Token::End, "", static_cast<int>(line.size()) + 1});
+  return out;
+}
+
+struct Node {
+  enum Kind { Atom, Not, And, Or, Imp, Iff, Exist } kind = Atom;
+  std::string pred;
+  std::vector<std::string> args;  // atom arguments, or the exists variables
+  std::unique_ptr<Node> a, b;
+};
+
+struct PredInfo {
+  std::vector<std::string> types;
+  std::vector<bool> exclusive;
+};
+
+class Translator {
+ public:
+  Translator(const std::string& path) : path_(path) {}
+
+  ImportResult run(const std::string& text, const std::vector<std::string>& queries) {
+    std::istringstream in(strip_comments(text));
+    std::string line;
+    int line_no = 0;
+    while (std::getline(in, line)) {
+      ++line_no;
+      if (!line.empty() && line.back() == '\r') line.pop_back();
+      try {
+        statement(line);
+      } catch (const Error& e) {
+        errors_.push_back(path_ + ":" + std::to_string(line_no) + ":" + std::to_string(e.col) + ": error: " + e.message);
+      }
+    }
+    std::set<std::string> query_set;
+    for (const auto& q : queries) {
+      if (!preds_.count(q))
+        errors_.push_back(path_ + ": error: --query: '" + q + "' is not a predicate declared in the file");
+      query_set.insert(q);
+    }
+    ImportResult r;
+    r.errors = errors_;
+    if (!errors_.empty()) return r;
+    std::ostringstream out;
+    out << "// Imported from " << std::filesystem::path(path_).filename().string()
+        << " by `ksmc import-mln` (Alchemy syntax; weights split over CNF clauses as in Alchemy).\n";
+    out << "domain " << domain_name() << ";\n\n";
+    for (const auto& t : type_order_) {
+      out << "type " << t;
+      if (const auto it = enumerated_.find(t); it != enumerated_.end()) {
+        out << " = {";
+        for (std::size_t k = 0; k < it->second.size(); ++k) out << (k ? ", " : "") << it->second[k];
+        out << "}";
+      }
+      out << ";\n";
+    }
+    out << "\n";
+    for (const auto& name : pred_order_) {
+      const auto& p = preds_.at(name);
+      const bool query = queries.empty() || query_set.count(name) > 0;
+      out << (query ? "query " : "evidence ") << name << "(";
+      bool dropped = false;
+      for (std::size_t k = 0; k < p.types.size(); ++k) {
+        out << (k ? ", " : "") << p.types[k] << (p.exclusive[k] && query ? "!" : "");
+        dropped = dropped || (p.exclusive[k] && !query);
+      }
+      out << ");" << (dropped ? "  // '!' dropped: exclusive arguments constrain query predicates only" : "") << "\n";
+    }
+    out << "\n" << rules_.str();
+    r.ksm = out.str();
+    return r;
+  }
+
+ private:
+  [[noreturn]] static void fail(const Token& t, const std::string& message) { throw Error{t.col, message}; }
+
+  std::string domain_name() const {
+    std::string stem = std::filesystem::path(path_).stem().string(), out;
+    for (char c : stem) out.push_back(std::isalnum(static_cast<unsigned char>(c)) ? c : '_');
+    if (out.empty() || std::isdigit(static_cast<unsigned char>(out[0])) || kKeywords.count(out)) out = "mln_" + out;
+    return out;
+  }
+
+  void check_name(const Token& t, const char* what) const {
+    if (kKeywords.count(t.text)) fail(t, std::string(what) + " '" + t.text + "' is a word of the ksm language; rename it");
+  }
+
+  const Token& peek() const { return toks_[pos_]; }
+  const Token& next() { return toks_[pos_++]; }
+  bool sym(const char* s) const { return peek().kind == Token::Sym && peek().text == s; }
+  void expect(const char* s) {
+    if (!sym(s)) fail(peek(), std::string("expected '") + s + "', found " + describe(peek()));
+    ++pos_;
+  }
+  static std::string describe(const Token& t) {
+    return t.kind == Token::End ? "the end of the line" : "'" + t.text + "'";
+  }
+
+  void statement(const std::string& line) {
+    toks_ = tokenize(line);
+    pos_ = 0;
+    if (peek().kind == Token::End) return;
+    if (sym("#")) fail(peek(), "'#include' and other directives are not supported; merge the files");
+    // type declaration: name = { ... }
+    if (peek().kind == Token::Ident && toks_[1].kind == Token::Sym && toks_[1].text == "=") return type_decl();
+    // predicate declaration: first bare atom of an undeclared predicate
+    if (peek().kind == Token::Ident && toks_[1].kind == Token::Sym && toks_[1].text == "(" && !preds_.count(peek().text) &&
+        is_bare_atom())
+      return pred_decl();
+    if (peek().kind == Token::Ident && toks_[1].kind == Token::Ident && toks_[2].kind == Token::Sym && toks_[2].text == "(")
+      fail(toks_[1], "function declarations ('" + peek().text + " " + toks_[1].text + "(...)') are not supported");
+    formula_statement();
+  }
+
+  bool is_bare_atom() const {
+    std::size_t k = 2;
+    while (k < toks_.size() && !(toks_[k].kind == Token::Sym && toks_[k].text == ")")) ++k;
+    return k + 2 == toks_.size();  // ")" then End
+  }
+
+  void type_decl() {
+    const Token name = next();
+    check_name(name, "type");
+    ++pos_;  // '='
+    expect("{");
+    std::vector<std::string> constants;
+    while (true) {
+      const Token& t = next();
+      if (t.kind == Token::Number) fail(t, "integer or numeric types ('" + name.text + " = {" + t.text + ", ...}') are not supported");
+      if (t.kind == Token::String) fail(t, "string constants (" + t.text + ") are not supported");
+      if (t.kind != Token::Ident) fail(t, "expected a constant name, found " + describe(t));
+      check_name(t, "constant");
+      if (!std::isupper(static_cast<unsigned char>(t.text[0])))
+        fail(t, "constant '" + t.text + "' must be capitalised (lowercase names are variables)");
+      constants.push_back(t.text);
+      if (sym(",")) { ++pos_; continue; }
+      expect("}");
+      break;
+    }
+    if (peek().kind != Token::End) fail(peek(), "unexpected " + describe(peek()) + " after the type declaration");
+    if (enumerated_.count(name.text)) fail(name, "type '" + name.text + "' is declared twice");
+    use_type(name.text);
+    enumerated_[name.text] = constants;
+    for (const auto& c : constants) constant_type_[c] = name.text;
+  }
+
+  void use_type(const std::string& t) {
+    if (std::find(type_order_.begin(), type_order_.end(), t) == type_order_.end()) type_order_.push_back(t);
+  }
+
+  void pred_decl() {
+    const Token name = next();
+    check_name(name, "predicate");
+    expect("(");
+    PredInfo p;
+    while (true) {
+      const Token& t = next();
+      if (t.kind != Token::Ident) fail(t, "expected a type name in the declaration of '" + name.text + "', found " + describe(t));
+      check_name(t, "type");
+      p.types.push_back(t.text);
+      use_type(t.text);
+      bool excl = false;
+      if (sym("!")) { ++pos_; excl = true; }
+      p.exclusive.push_back(excl);
+      if (sym(",")) { ++pos_; continue; }
+      expect(")");
+      break;
+    }
+    preds_[name.text] = p;
+    pred_order_.push_back(name.text);
+  }
+
+  void formula_statement() {
+    std::string weight;
+    if (peek().kind == Token::Number) weight = next().text;
+    auto f = iff();
+    bool hard = false;
+    if (sym(".")) {
+      hard = true;
+      if (!weight.empty()) fail(peek(), "a hard formula (ending in '.') cannot have a weight (" + weight + ")");
+      ++pos_;
+    }
+    if (sym("=")) fail(peek(), "equality ('=') is not supported");
+    if (peek().kind != Token::End) fail(peek(), "unexpected " + describe(peek()) + " after the formula");
+    if (hard) rules_ << "hard ";
+    else if (weight.empty()) rules_ << "w 0: ";  // Alchemy: weight to be learned
+    else rules_ << "w " << weight << ": ";
+    rules_ << print(*f, true) << ".";
+    if (!hard && weight.empty()) rules_ << "  // no weight in the .mln: to be learned";
+    rules_ << "\n";
+  }
+
+  std::unique_ptr<Node> binary(Node::Kind k, std::unique_ptr<Node> a, std::unique_ptr<Node> b) {
+    auto n = std::make_unique<Node>();
+    n->kind = k;
+    n->a = std::move(a);
+    n->b = std::move(b);
+    return n;
+  }
+  std::unique_ptr<Node> iff() {
+    auto l = imp();
+    while (sym("<=>")) { ++pos_; l = binary(Node::Iff, std::move(l), imp()); }
+    return l;
+  }
+  std::unique_ptr<Node> imp() {
+    auto l = disj();
+    if (sym("=>")) { ++pos_; return binary(Node::Imp, std::move(l), imp()); }
+    return l;
+  }
+  std::unique_ptr<Node> disj() {
+    auto l = conj();
+    while (peek().kind == Token::Ident && peek().text == "v") { ++pos_; l = binary(Node::Or, std::move(l), conj()); }
+    return l;
+  }
+  std::unique_ptr<Node> conj() {
+    auto l = unary();
+    while (sym("^")) { ++pos_; l = binary(Node::And, std::move(l), unary()); }
+    return l;
+  }
+  std::unique_ptr<Node> unary() {
+    const Token& t = peek();
+    if (sym("!")) {
+      ++pos_;
+      auto n = std::make_unique<Node>();
+      n->kind = Node::Not;
+      n->a = unary();
+      return n;
+    }
+    if (sym("(")) {
+      ++pos_;
+      auto f = iff();
+      expect(")");
+      return f;
+    }
+    if (sym("+") || sym("*")) fail(t, "the '" + t.text + "' operator (per-constant weights / sign choices) is not supported");
+    if (t.kind == Token::Ident && t.text == "FORALL")
+      fail(t, "FORALL is not supported (free variables are universally quantified already)");
+    if (t.kind == Token::Ident && t.text == "EXIST") {
+      ++pos_;
+      auto n = std::make_unique<Node>();
+      n->kind = Node::Exist;
+      while (true) {
+        const Token& v = next();
+        if (v.kind != Token::Ident || !std::islower(static_cast<unsigned char>(v.text[0])))
+          fail(v, "expected a lowercase variable after EXIST, found " + describe(v));
+        check_name(v, "variable");
+        n->args.push_back(v.text);
+        if (sym(",")) { ++pos_; continue; }
+        break;
+      }
+      n->a = iff();
+      return n;
+    }
+    if (t.kind != Token::Ident) fail(t, "expected an atom, '!', '(' or EXIST, found " + describe(t));
+    if (toks_[pos_ + 1].kind == Token::Sym && toks_[pos_ + 1].text == "=")
+      fail(toks_[pos_ + 1], "equality ('" + t.text + " = ...') is not supported");
+    return atom();
+  }
+  std::unique_ptr<Node> atom() {
+    const Token name = next();
+    const auto it = preds_.find(name.text);
+    if (it == preds_.end()) {
+      const std::string near = check::suggest(name.text, pred_order_);
+      fail(name, "predicate '" + name.text + "' is not declared" +
+                     (near.empty() ? " (declare it as " + name.text + "(type, ...) first)" : " (did you mean '" + near + "'?)"));
+    }
+    if (!sym("(")) fail(peek(), "expected '(' after '" + name.text + "', found " + describe(peek()));
+    ++pos_;
+    auto n = std::make_unique<Node>();
+    n->pred = name.text;
+    while (true) {
+      const Token& a = next();
+      if (a.kind == Token::Number) fail(a, "numeric constants (" + a.text + ") are not supported");
+      if (a.kind == Token::String) fail(a, "string constants (" + a.text + ") are not supported");
+      if (a.kind == Token::Sym && (a.text == "+" || a.text == "*"))
+        fail(a, "the '" + a.text + "' operator (per-constant weights / sign choices) is not supported");
+      if (a.kind != Token::Ident) fail(a, "expected a variable or constant, found " + describe(a));
+      check_name(a, std::isupper(static_cast<unsigned char>(a.text[0])) ? "constant" : "variable");
+      const std::size_t k = n->args.size();
+      if (k < it->second.types.size() && std::isupper(static_cast<unsigned char>(a.text[0]))) {
+        const std::string& type = it->second.types[k];
+        const auto en = enumerated_.find(type);
+        if (en == enumerated_.end() || std::find(en->second.begin(), en->second.end(), a.text) == en->second.end())
+          fail(a, "constant '" + a.text + "' must be declared in its type (" + type + " = {" + a.text +
+                      ", ...}): ksm rules only name declared constants");
+      }
+      n->args.push_back(a.text);
+      if (sym(",")) { ++pos_; continue; }
+      expect(")");
+      break;
+    }
+    if (n->args.size() != it->second.types.size())
+      fail(name, "'" + name.text + "' takes " + std::to_string(it->second.types.size()) + " arguments, got " +
+                     std::to_string(n->args.size()));
+    return n;
+  }
+
+  static std::string print(const Node& n, bool top = false) {
+    switch (n.kind) {
+      case Node::Atom: {
+        std::string s = n.pred + "(";
+        for (std::size_t k = 0; k < n.args.size(); ++k) s += (k ? ", " : "") + n.args[k];
+        return s + ")";
+      }
+      case Node::Not:
+        return "!" + wrap(*n.a);
+      case Node::Exist: {
+        std::string s = "exists ";
+        for (std::size_t k = 0; k < n.args.size(); ++k) s += (k ? ", " : "") + n.args[k];
+        s += ": " + print(*n.a, true);
+        return top ? s : "(" + s + ")";
+      }
+      default: {
+        const char* op = n.kind == Node::And ? " ^ " : n.kind == Node::Or ? " v " : n.kind == Node::Imp ? " => " : " <=> ";
+        // a left-nested chain of ^ or v needs no parentheses
+        const bool chain = (n.kind == Node::And || n.kind == Node::Or) && n.a->kind == n.kind;
+        const std::string s = (chain ? print(*n.a, true) : wrap(*n.a)) + op + wrap(*n.b);
+        return top ? s : "(" + s + ")";
+      }
+    }
+  }
+  static std::string wrap(const Node& n) { return print(n, n.kind == Node::Atom || n.kind == Node::Not); }
+
+  std::string path_;
+  std::vector<Token> toks_;
+  std::size_t pos_ = 0;
+  std::map<std::string, PredInfo> preds_;
+  std::vector<std::string> pred_order_, type_order_;
+  std::map<std::string, std::vector<std::string>> enumerated_;
+  std::map<std::string, std::string> constant_type_;
+  std::ostringstream rules_;
+  std::vector<std::string> errors_;
+};
+
+}  // namespace
+
+ImportResult import_mln(const std::string& text, const std::string& path, const std::vector<std::string>& queries) {
+  return Translator(path).run(text, queries);
+}
+
+int run_import(const std::vector<std::string>& files, const std::vector<std::string>& queries,
+               const std::string& out_path, std::ostream& out, std::ostream& err) {
+  if (files.size() != 1) {
+    err << "ksmc import-mln: give one FILE.mln\n";
+    return 2;
+  }
+  std::ifstream in(files.front(), std::ios::binary);
+  if (!in) {
+    err << files.front() << ": error: cannot read the file\n";
+    return 1;
+  }
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const ImportResult r = import_mln(buffer.str(), files.front(), queries);
+  for (const auto& e : r.errors) err << e << "\n";
+  if (!r.errors.empty()) {
+    err << "ksmc import-mln: " << r.errors.size() << (r.errors.size() == 1 ? " error" : " errors") << "\n";
+    return 1;
+  }
+  if (out_path.empty()) {
+    out << r.ksm;
+    return 0;
+  }
+  std::ofstream file(out_path, std::ios::binary);
+  file << r.ksm;
+  if (!file) {
+    err << "ksmc import-mln: cannot write '" << out_path << "'\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace ksmc::compiler::alchemy

@@ -1,0 +1,293 @@
+#include "runtime/mln/weight_learning.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <map>
+#include <string>
+
+#include "runtime/mln/error.h"
+#include "runtime/mln/exact.h"
+
+namespace ksmc::runtime::mln {
+namespace {
+
+using Features = std::vector<std::pair<std::int32_t, double>>;  // (param, count), sparse
+
+// A clause's share: its parameter and scale, or -1 and its fixed weight.
+struct Share {
+  std::int32_t param = -1;
+  double scale = 0.0;  // param >= 0
+  double fixed = 0.0;  // param < 0
+};
+
+Share share_of(const GroundNetwork& net, std::int32_t c, const WeightTying& tying) {
+  Share s;
+  const std::int32_t origin = net.origin(c);
+  if (!net.is_hard(c) && origin >= 0 && static_cast<std::size_t>(origin) < tying.param_of_clause.size() &&
+      tying.param_of_clause[origin] >= 0) {
+    s.param = tying.param_of_clause[origin];
+    s.scale = tying.scale_of_clause[origin];
+  } else if (!net.is_hard(c)) {
+    s.fixed = net.weight(c);
+  }
+  return s;
+}
+
+bool satisfied(const GroundNetwork& net, std::int32_t c, std::span<const std::uint8_t> x) {
+  for (Lit l : net.clause(c))
+    if (lit_true(l, x[lit_atom(l)])) return true;
+  return false;
+}
+
+void add_feature(Features& f, std::int32_t param, double v) {
+  for (auto& [p, x] : f)
+    if (p == param) { x += v; return; }
+  f.push_back({param, v});
+}
+
+// The conditional of one variable given the rest of one world (repeated `count` times).
+struct Conditional {
+  double count = 1.0;
+  std::int32_t observed = 0;
+  std::vector<std::uint8_t> allowed;
+  std::vector<double> fixed;
+  std::vector<Features> feats;
+};
+
+std::string world_error(std::size_t set, std::size_t world, const std::string& what) {
+  return "training set " + std::to_string(set + 1) + ", world " + std::to_string(world + 1) + ": " + what;
+}
+
+// Identical worlds of a set merged, with their counts.
+std::vector<std::pair<std::vector<std::uint8_t>, double>> merge_worlds(const TrainingSet& ts, std::size_t set) {
+  std::map<std::vector<std::uint8_t>, double> counts;
+  for (std::size_t w = 0; w < ts.worlds.size(); ++w) {
+    const auto& x = ts.worlds[w];
+    if (x.size() != static_cast<std::size_t>(ts.network.num_atoms()))
+      throw MlnError(world_error(set, w, "has " + std::to_string(x.size()) + " values for " +
+                                           std::to_string(ts.network.num_atoms()) + " free atoms"));
+    if (!ts.network.feasible(x)) {
+      std::string rules;
+      for (std::int32_t c = 0; c < ts.network.num_clauses(); ++c)
+        if (ts.network.is_hard(c) && !satisfied(ts.network, c, x)) { rules = ts.network.origin_name(c); break; }
+      throw MlnError(world_error(set, w, rules.empty() ? "breaks an exactly-one block" : "breaks hard rule " + rules));
+    }
+    counts[x] += 1.0;
+  }
+  return {counts.begin(), counts.end()};
+}
+
+std::vector<Conditional> tabulate_pll(std::span<const TrainingSet> data, const WeightTying& tying, double& worlds) {
+  std::vector<Conditional> out;
+  worlds = 0.0;
+  for (std::size_t si = 0; si < data.size(); ++si) {
+    const GroundNetwork& net = data[si].network;
+    const Occurrences occ = build_occurrences(net);
+    // variables: plain atoms, then blocks
+    std::vector<std::vector<AtomId>> vars;
+    for (AtomId a = 0; a < net.num_atoms(); ++a)
+      if (net.block_of(a) < 0) vars.push_back({a});
+    for (std::int32_t b = 0; b < net.num_blocks(); ++b) {
+      const auto atoms = net.block(b);
+      vars.emplace_back(atoms.begin(), atoms.end());
+    }
+    std::vector<Share> shares;
+    for (std::int32_t c = 0; c < net.num_clauses(); ++c) shares.push_back(share_of(net, c, tying));
+    std::vector<std::int32_t> touched;
+    for (auto& [world, count] : merge_worlds(data[si], si)) {
+      worlds += count;
+      std::vector<std::uint8_t> x = world;
+      for (const auto& atoms : vars) {
+        touched.clear();
+        for (AtomId a : atoms)
+          for (std::int32_t c : occ.clauses_of(a)) touched.push_back(c);
+        std::sort(touched.begin(), touched.end());
+        touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+        Conditional cond;
+        cond.count = count;
+        const bool block = atoms.size() > 1 || net.block_of(atoms[0]) >= 0;
+        const std::size_t nv = block ? atoms.size() : 2;
+        for (std::size_t u = 0; u < nv; ++u) {
+          if (block) {
+            for (std::size_t k = 0; k < atoms.size(); ++k) x[atoms[k]] = k == u ? 1 : 0;
+            if (world[atoms[u]]) cond.observed = static_cast<std::int32_t>(u);
+          } else {
+            x[atoms[0]] = static_cast<std::uint8_t>(u);
+          }
+          bool ok = true;
+          double fixed = 0.0;
+          Features f;
+          for (std::int32_t c : touched) {
+            const bool sat = satisfied(net, c, x);
+            if (net.is_hard(c)) { ok = ok && sat; continue; }
+            if (!sat) continue;
+            if (shares[c].param >= 0) add_feature(f, shares[c].param, shares[c].scale);
+            else fixed += shares[c].fixed;
+          }
+          cond.allowed.push_back(ok ? 1 : 0);
+          cond.fixed.push_back(fixed);
+          cond.feats.push_back(std::move(f));
+        }
+        if (!block) cond.observed = world[atoms[0]];
+        for (AtomId a : atoms) x[a] = world[a];
+        out.push_back(std::move(cond));
+      }
+    }
+  }
+  return out;
+}
+
+// Pseudo-log-likelihood of the tabulated conditionals and its gradient.
+double pll(const std::vector<Conditional>& conds, std::span<const double> w, std::vector<double>& grad) {
+  double total = 0.0;
+  std::vector<double> s, p;
+  for (const auto& c : conds) {
+    const std::size_t nv = c.allowed.size();
+    s.assign(nv, -std::numeric_limits<double>::infinity());
+    double mx = -std::numeric_limits<double>::infinity();
+    for (std::size_t u = 0; u < nv; ++u) {
+      if (!c.allowed[u]) continue;
+      s[u] = c.fixed[u];
+      for (const auto& [j, v] : c.feats[u]) s[u] += w[j] * v;
+      mx = std::max(mx, s[u]);
+    }
+    double z = 0.0;
+    p.assign(nv, 0.0);
+    for (std::size_t u = 0; u < nv; ++u)
+      if (c.allowed[u]) z += (p[u] = std::exp(s[u] - mx));
+    total += c.count * (s[c.observed] - mx - std::log(z));
+    for (const auto& [j, v] : c.feats[c.observed]) grad[j] += c.count * v;
+    for (std::size_t u = 0; u < nv; ++u)
+      for (const auto& [j, v] : c.feats[u]) grad[j] -= c.count * v * p[u] / z;
+  }
+  return total;
+}
+
+// The network with clause weights from the parameters (and no constant).
+GroundNetwork reweighted(const GroundNetwork& net, const WeightTying& tying, std::span<const double> w) {
+  GroundNetwork out;
+  out.add_atoms(net.num_atoms());
+  for (std::int32_t b = 0; b < net.num_blocks(); ++b) out.add_exactly_one(net.block(b));
+  for (std::int32_t c = 0; c < net.num_clauses(); ++c) {
+    if (net.is_hard(c)) { out.add_hard_clause(net.clause(c), net.origin(c)); continue; }
+    const Share s = share_of(net, c, tying);
+    out.add_clause(net.clause(c), s.param >= 0 ? w[s.param] * s.scale : s.fixed, net.origin(c));
+  }
+  return out;
+}
+
+// Conditional log-likelihood sum_worlds [sum_c w_c n_c(x) - log Z] and its gradient.
+struct CllSet {
+  const GroundNetwork* net;
+  double worlds = 0.0;
+  std::vector<double> counts;  // per param: sum over worlds of scaled satisfied-clause counts
+  double fixed = 0.0;          // sum over worlds of satisfied fixed soft weights
+};
+
+double cll(const std::vector<CllSet>& sets, const WeightTying& tying, std::span<const double> w, std::vector<double>& grad) {
+  double total = 0.0;
+  std::vector<double> wp(w.begin(), w.end());
+  constexpr double h = 1e-4;
+  for (const auto& s : sets) {
+    total += s.fixed;
+    for (std::size_t j = 0; j < wp.size(); ++j) {
+      total += w[j] * s.counts[j];
+      grad[j] += s.counts[j];
+    }
+    total -= s.worlds * exact_inference(reweighted(*s.net, tying, w)).log_z;
+    for (std::size_t j = 0; j < wp.size(); ++j) {
+      wp[j] = w[j] + h;
+      const double up = exact_inference(reweighted(*s.net, tying, wp)).log_z;
+      wp[j] = w[j] - h;
+      const double down = exact_inference(reweighted(*s.net, tying, wp)).log_z;
+      wp[j] = w[j];
+      grad[j] -= s.worlds * (up - down) / (2.0 * h);
+    }
+  }
+  return total;
+}
+
+}  // namespace
+
+LearnResult learn_weights(std::span<const TrainingSet> data, const WeightTying& tying, std::vector<double> initial,
+                          const LearnOptions& options) {
+  const auto np = static_cast<std::size_t>(tying.num_params);
+  if (initial.size() != np) initial.assign(np, 0.0);
+  double worlds = 0.0;
+  std::function<double(std::span<const double>, std::vector<double>&)> data_term;
+  std::vector<Conditional> conds;
+  std::vector<CllSet> sets;
+  if (options.objective == Objective::PseudoLikelihood) {
+    conds = tabulate_pll(data, tying, worlds);
+    data_term = [&](std::span<const double> w, std::vector<double>& g) { return pll(conds, w, g); };
+  } else {
+    for (std::size_t si = 0; si < data.size(); ++si) {
+      CllSet s{&data[si].network, 0.0, std::vector<double>(np, 0.0), 0.0};
+      const GroundNetwork& net = data[si].network;
+      for (auto& [x, count] : merge_worlds(data[si], si)) {
+        s.worlds += count;
+        for (std::int32_t c = 0; c < net.num_clauses(); ++c) {
+          if (net.is_hard(c) || !satisfied(net, c, x)) continue;
+          const Share sh = share_of(net, c, tying);
+          if (sh.param >= 0) s.counts[sh.param] += count * sh.scale;
+          else s.fixed += count * sh.fixed;
+        }
+      }
+      worlds += s.worlds;
+      sets.push_back(std::move(s));
+    }
+    data_term = [&](std::span<const double> w, std::vector<double>& g) { return cll(sets, tying, w, g); };
+  }
+  if (worlds <= 0.0) throw MlnError("weight learning: no training worlds");
+  const double inv_var = 1.0 / (options.prior_sigma * options.prior_sigma);
+  // The objective per world: (data term - prior) / worlds, and its gradient.
+  auto eval = [&](std::span<const double> w, std::vector<double>& g) {
+    g.assign(np, 0.0);
+    double f = data_term(w, g);
+    for (std::size_t j = 0; j < np; ++j) {
+      f -= 0.5 * w[j] * w[j] * inv_var;
+      g[j] -= w[j] * inv_var;
+      g[j] /= worlds;
+    }
+    return f / worlds;
+  };
+  LearnResult r;
+  std::vector<double> w = std::move(initial), g, wn, gn;
+  double f = eval(w, g);
+  double step = 1.0;
+  const double tol = options.objective == Objective::ConditionalLikelihood ? std::max(options.tolerance, 1e-6)
+                                                                           : options.tolerance;
+  for (r.iterations = 0; r.iterations < options.max_iterations; ++r.iterations) {
+    double gmax = 0.0, gg = 0.0;
+    for (double x : g) { gmax = std::max(gmax, std::abs(x)); gg += x * x; }
+    if (gmax < tol) { r.converged = true; break; }
+    double fn = f;
+    double t = step;
+    while (true) {
+      wn = w;
+      for (std::size_t j = 0; j < np; ++j) wn[j] += t * g[j];
+      fn = eval(wn, gn);
+      if (fn >= f + 1e-4 * t * gg) break;
+      t *= 0.5;
+      if (t < 1e-16) break;
+    }
+    if (t < 1e-16) break;  // no ascent possible: at the optimum up to rounding
+    double ss = 0.0, sy = 0.0;
+    for (std::size_t j = 0; j < np; ++j) {
+      const double sj = wn[j] - w[j], yj = g[j] - gn[j];
+      ss += sj * sj;
+      sy += sj * yj;
+    }
+    step = sy > 0.0 ? std::clamp(ss / sy, 1e-8, 1e8) : t * 2.0;
+    w.swap(wn);
+    g.swap(gn);
+    f = fn;
+  }
+  r.params = w;
+  r.objective = f;
+  return r;
+}
+
+}  // namespace ksmc::runtime::mln
