@@ -1,5 +1,6 @@
 #include "compiler/emit/emit_model.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -9,35 +10,32 @@
 namespace ksmc::compiler::emit {
 namespace {
 
-// A name of the domain language as a C++ identifier: a C++ keyword gets a trailing
-// underscore (`seg.short` -> `seg::short_`; stdlib/<kit>/blocks.h declares it so).
-std::string block_identifier(const std::string& name) {
-  static const std::set<std::string> keywords = {
-      "alignas", "alignof", "and", "and_eq", "asm", "auto", "bitand", "bitor", "bool", "break", "case", "catch",
-      "char", "char8_t", "char16_t", "char32_t", "class", "compl", "concept", "const", "consteval", "constexpr",
-      "constinit", "const_cast", "continue", "co_await", "co_return", "co_yield", "decltype", "default", "delete",
-      "do", "double", "dynamic_cast", "else", "enum", "explicit", "export", "extern", "false", "float", "for",
-      "friend", "goto", "if", "inline", "int", "long", "mutable", "namespace", "new", "noexcept", "not", "not_eq",
-      "nullptr", "operator", "or", "or_eq", "private", "protected", "public", "register", "reinterpret_cast",
-      "requires", "return", "short", "signed", "sizeof", "static", "static_assert", "static_cast", "struct",
-      "switch", "template", "this", "thread_local", "throw", "true", "try", "typedef", "typeid", "typename",
-      "union", "unsigned", "using", "virtual", "void", "volatile", "wchar_t", "while", "xor", "xor_eq"};
-  return keywords.count(name) ? name + "_" : name;
+// A name of the domain file as a C++ name: a C++ keyword gets a trailing underscore
+// (`seg.short` -> `blk::seg::short_`).
+std::string cpp_name(const std::string& name) {
+  static const std::set<std::string> kKeywords{
+      "alignas", "alignof", "and", "and_eq", "asm", "auto", "bitand", "bitor", "bool", "break", "case", "catch", "char",
+      "char8_t", "char16_t", "char32_t", "class", "compl", "concept", "const", "consteval", "constexpr", "constinit",
+      "const_cast", "continue", "co_await", "co_return", "co_yield", "decltype", "default", "delete", "do", "double",
+      "dynamic_cast", "else", "enum", "explicit", "export", "extern", "false", "float", "for", "friend", "goto", "if",
+      "inline", "int", "long", "mutable", "namespace", "new", "noexcept", "not", "not_eq", "nullptr", "operator", "or",
+      "or_eq", "private", "protected", "public", "register", "reinterpret_cast", "requires", "return", "short", "signed",
+      "sizeof", "static", "static_assert", "static_cast", "struct", "switch", "template", "this", "thread_local", "throw",
+      "true", "try", "typedef", "typeid", "typename", "union", "unsigned", "using", "virtual", "void", "volatile",
+      "wchar_t", "while", "xor", "xor_eq"};
+  return kKeywords.count(name) != 0 ? name + "_" : name;
 }
 
 // `geom.room_like` -> `blk::geom::room_like`.
 std::string block_name(const std::string& qualified) {
-  std::string s = "blk::";
-  std::string part;
-  for (char ch : qualified) {
-    if (ch == '.') {
-      s += block_identifier(part) + "::";
-      part.clear();
-    } else {
-      part.push_back(ch);
-    }
+  std::string s = "blk";
+  std::size_t start = 0;
+  while (start <= qualified.size()) {
+    const std::size_t dot = std::min(qualified.find('.', start), qualified.size());
+    s += "::" + cpp_name(qualified.substr(start, dot - start));
+    start = dot + 1;
   }
-  return s + block_identifier(part);
+  return s;
 }
 
 // A C++ double literal that reads back to exactly `v`.
@@ -165,7 +163,7 @@ class ModelEmitter {
            ", " + double_literal(k.threshold) + ", " + (k.negated ? "true" : "false") + "}";
   }
 
-  static std::string move(const std::string& m) { return m.empty() ? "blk::Move{}" : "blk::Move::" + block_identifier(m); }
+  static std::string move(const std::string& m) { return m.empty() ? "blk::Move{}" : "blk::Move::" + cpp_name(m); }
 
   void statements(std::ostringstream& o) const {
     for (const lower::ExtractIr& x : ir_.extracts) {
