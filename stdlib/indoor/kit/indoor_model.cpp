@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
+#include <tuple>
 
 #include "stdlib/indoor/detect/door.h"
 #include "stdlib/indoor/detect/fsu.h"
 #include "stdlib/indoor/detect/split.h"
+#include "stdlib/indoor/kit/door_cache.h"
 
 namespace ksmc::stdlib::indoor::kit {
 
@@ -252,7 +255,7 @@ void IndoorModel::restore(const mcmc::Snapshot& s) {
     w.apply(m);
     sw_.reset(w);
     terms_.clear();
-    for (const auto& b : s.at("terms")) terms_.push_back({b.at("prior").get<std::size_t>(), b.at("units").get<std::vector<UnitId>>()});
+    for (const auto& b : s.at("terms")) terms_.push_back({b.at("prior").get<std::size_t>(), b.at("units").get<std::vector<std::uint64_t>>()});
     iteration_ = s.value("proposals", std::uint64_t{0});
     offset_ = s.value("target_offset", 0.0);
   } catch (const nlohmann::json::exception& e) {

@@ -11,17 +11,14 @@
 #pragma once
 
 #include <cstdint>
-#include <map>
 #include <memory>
 #include <optional>
 #include <random>
-#include <tuple>
 #include <vector>
 
 #include "runtime/mcmc/model.h"
 #include "stdlib/indoor/blocks.h"
 #include "stdlib/indoor/kernels.h"
-#include "stdlib/indoor/kit/door_cache.h"
 #include "stdlib/indoor/kit/plan.h"
 #include "stdlib/indoor/kit/semantic_layer.h"
 #include "stdlib/indoor/scored_world.h"

@@ -27,8 +27,9 @@ SemanticResult SemanticLayer::evaluate(const World& w) {
   r.outcome = sem_.evaluate(scene, n);
   const dom::Outcome& o = *r.outcome;
   for (const Unit& u : w.units()) r.ids.push_back(u.id);
+  const std::size_t enumerated = sem_.core().enumerated();  // constants before the units
   for (std::size_t i = 0; i < n; ++i) {
-    const std::int32_t arg[1] = {static_cast<std::int32_t>(i)};
+    const std::int32_t arg[1] = {static_cast<std::int32_t>(enumerated + i)};
     std::vector<double> probs;
     for (std::int32_t q : plan_.type_predicates) probs.push_back(sem_.value(o, q, arg));
     r.type.push_back(probs.empty() ? -1 : static_cast<int>(dom::most_probable(probs)));
@@ -56,7 +57,11 @@ SemanticResult SemanticLayer::evaluate(const World& w) {
                                      [&](const dom::Condition& cond) { return sem_.core().holds(o, cond, c); });
       if (!holds) continue;
       PriorBinding b{p, {}};
-      for (std::int32_t k : c) b.units.push_back(r.ids[static_cast<std::size_t>(k)]);
+      for (std::size_t v = 0; v < c.size(); ++v) {
+        const auto k = static_cast<std::size_t>(c[v]);
+        const bool unit = cp.var_types[v] == binding_.constant_type && k >= enumerated;
+        b.units.push_back(unit ? r.ids[k - enumerated] : PriorBinding::kConstant + k);
+      }
       r.terms.push_back(std::move(b));
     }
   }
@@ -67,14 +72,20 @@ double SemanticLayer::log_prior(const World& w, const std::vector<PriorBinding>&
   if (terms.empty()) return 0.0;
   const blocks::Scene scene(w, resolution_, map_);
   const auto units = w.units();
+  const auto enumerated = static_cast<std::int32_t>(sem_.core().enumerated());
   double lp = 0.0;
   std::vector<std::int32_t> c;
   for (const PriorBinding& b : terms) {
     c.clear();
-    for (UnitId id : b.units) {
-      const auto it = std::lower_bound(units.begin(), units.end(), id, [](const Unit& u, UnitId x) { return u.id < x; });
+    for (std::uint64_t x : b.units) {
+      if (x >= PriorBinding::kConstant) {
+        c.push_back(static_cast<std::int32_t>(x - PriorBinding::kConstant));
+        continue;
+      }
+      const auto id = static_cast<UnitId>(x);
+      const auto it = std::lower_bound(units.begin(), units.end(), id, [](const Unit& u, UnitId v) { return u.id < v; });
       if (it == units.end() || it->id != id) break;
-      c.push_back(static_cast<std::int32_t>(it - units.begin()));
+      c.push_back(enumerated + static_cast<std::int32_t>(it - units.begin()));
     }
     if (c.size() == b.units.size()) lp += binding_.conditional_priors[b.prior].eval(scene, c.data());
   }

@@ -21,10 +21,12 @@
 namespace ksmc::stdlib::indoor::kit {
 
 // One binding of a conditional prior whose conditions held: the prior (index into the
-// binding's conditional_priors) and, per variable, the unit id.
+// binding's conditional_priors) and, per variable, the unit id (a run-time constant) or, for
+// an enumerated constant, kConstant + its index.
 struct PriorBinding {
+  static constexpr std::uint64_t kConstant = std::uint64_t{1} << 32;
   std::size_t prior = 0;
-  std::vector<UnitId> units;
+  std::vector<std::uint64_t> units;
   bool operator==(const PriorBinding&) const = default;
 };
 
