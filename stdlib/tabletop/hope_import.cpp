@@ -5,6 +5,7 @@
 #include <map>
 #include <sstream>
 
+#include "runtime/io/json_error.h"
 #include "stdlib/tabletop/json_reader.h"
 
 namespace ksmc::stdlib::tabletop {
