@@ -27,12 +27,14 @@ bool read_file(const std::string& path, std::string& text, std::string& error) {
   }
   // Read at most kMaxSourceBytes (+1 to notice more): /dev/zero or a huge file is refused
   // instead of exhausting memory.
-  text.assign(kMaxSourceBytes + 1, '\0');
-  in.read(text.data(), static_cast<std::streamsize>(text.size()));
-  text.resize(static_cast<std::size_t>(in.gcount()));
-  if (text.size() > kMaxSourceBytes) {
-    error = "larger than " + std::to_string(kMaxSourceBytes / 1000000) + " MB (not a .ksm source?)";
-    return false;
+  text.clear();
+  char chunk[1 << 16];
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxSourceBytes) {
+      error = "larger than " + std::to_string(kMaxSourceBytes / 1000000) + " MB (not a .ksm source?)";
+      return false;
+    }
   }
   return normalize_source(text, error);
 }
