@@ -21,8 +21,12 @@ CXX_BIN="${KSMC_FUZZ_CXX:-clang++}"
 
 command -v "$CXX_BIN" >/dev/null || { echo "fuzz.sh: $CXX_BIN not found"; exit 1; }
 mkdir -p "$BUILD_DIR"
-cmake -S compiler/fuzz -B "$BUILD_DIR" -DCMAKE_CXX_COMPILER="$CXX_BIN" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  > "$BUILD_DIR/configure.log" 2>&1 || { cat "$BUILD_DIR/configure.log"; exit 1; }
+# Configure once (the build re-runs CMake when a CMakeLists changes): configuring again
+# rewrites the ANTLR shim header and would recompile everything.
+if [ ! -f "$BUILD_DIR/CMakeCache.txt" ]; then
+  cmake -S compiler/fuzz -B "$BUILD_DIR" -DCMAKE_CXX_COMPILER="$CXX_BIN" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    > "$BUILD_DIR/configure.log" 2>&1 || { cat "$BUILD_DIR/configure.log"; rm -f "$BUILD_DIR/CMakeCache.txt"; exit 1; }
+fi
 cmake --build "$BUILD_DIR" --target "${TARGETS[@]}" -j "$JOBS" > "$BUILD_DIR/build.log" 2>&1 \
   || { tail -50 "$BUILD_DIR/build.log"; exit 1; }
 
