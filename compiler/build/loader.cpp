@@ -25,9 +25,39 @@ bool read_file(const std::string& path, std::string& text, std::string& error) {
     error = std::strerror(errno);
     return false;
   }
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  text = ss.str();
+  // Read at most kMaxSourceBytes (+1 to notice more): /dev/zero or a huge file is refused
+  // instead of exhausting memory.
+  text.clear();
+  char chunk[1 << 16];
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxSourceBytes) {
+      error = "larger than " + std::to_string(kMaxSourceBytes / 1000000) + " MB (not a .ksm source?)";
+      return false;
+    }
+  }
+  return normalize_source(text, error);
+}
+
+bool normalize_source(std::string& text, std::string& error) {
+  if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);  // UTF-8 byte order mark
+  std::size_t line = 1;
+  std::size_t column = 1;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\0') {
+      error = "NUL byte at line " + std::to_string(line) + ", column " + std::to_string(column) +
+              " (a binary file, or UTF-16? sources must be UTF-8 text)";
+      return false;
+    }
+    // A lone \r (old Mac line end) ends a line like \n; same length, so places stay.
+    if (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n')) text[i] = '\n';
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
   return true;
 }
 

@@ -4,6 +4,7 @@
 // diagnostics) relative the way it was found, so output does not depend on the machine.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -26,7 +27,13 @@ bool load_program(const std::string& path, const LoadOptions& options, diag::Sou
 bool load_program_text(const std::string& path, std::string text, const LoadOptions& options,
                        diag::SourceManager& sources, diag::DiagEngine& diags, ast::Program& out);
 
-// Reads a whole file; false (and `error` set) when it cannot be read.
+// Reads a whole file (at most kMaxSourceBytes) and normalizes it (normalize_source); false
+// (and `error` set) when it cannot be read or is not text.
+inline constexpr std::size_t kMaxSourceBytes = 64'000'000;
 bool read_file(const std::string& path, std::string& text, std::string& error);
+
+// Drops a UTF-8 byte order mark and turns lone \r line ends into \n; false (and `error`
+// naming line and column) for a NUL byte.
+bool normalize_source(std::string& text, std::string& error);
 
 }  // namespace ksmc::compiler::build

@@ -19,6 +19,7 @@
 #include "compiler/driver/subprocess.h"
 #include "compiler/emit/emit_factors.h"
 #include "runtime/io/atomic_file.h"
+#include "runtime/io/cancel.h"
 
 #ifndef KSMC_VERSION
 #define KSMC_VERSION "unknown"
@@ -248,6 +249,13 @@ int run_build(const BuildRequest& request, std::ostream& out, std::ostream& err)
     return kErrors;
   }
 
+  // Signals from here on stop the build cleanly: the work folder is removed (interrupted()).
+  const runtime::io::SignalGuard signals;
+  const auto interrupted = [&err] {
+    err << "ksmc build: interrupted by " << runtime::io::signal_name(runtime::io::cancel_signal())
+        << "; temporary files removed\n";
+    return runtime::io::interrupted_exit_code(runtime::io::cancel_signal());
+  };
   WorkDir work;
   if (!request.keep_dir.empty()) {
     work.path = fs::absolute(request.keep_dir, ec).lexically_normal();
@@ -286,7 +294,9 @@ int run_build(const BuildRequest& request, std::ostream& out, std::ostream& err)
   const char* const step_names[] = {"configuring", "compiling"};
   for (std::size_t i = 0; i < steps.size(); ++i) {
     if (request.verbose) err << "ksmc build: " << shell_line(steps[i]) << "\n" << std::flush;
+    if (runtime::io::cancel_requested()) return interrupted();
     const ProcessResult r = run_process(steps[i], request.verbose ? std::nullopt : std::optional<fs::path>(log));
+    if (runtime::io::cancel_requested()) return interrupted();
     if (!r.started) {
       err << "ksmc build: cannot run " << steps[i].front() << ": " << r.error << "\n";
       return kErrors;
@@ -319,6 +329,7 @@ int run_build(const BuildRequest& request, std::ostream& out, std::ostream& err)
     err << "ksmc build: the build finished but " << built.string() << " is missing\n";
     return kErrors;
   }
+  if (runtime::io::cancel_requested()) return interrupted();
   fs::create_directories(output.parent_path(), ec);
   std::string error;
   if (!install_binary(built, output, error)) {

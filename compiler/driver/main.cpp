@@ -122,7 +122,7 @@ int cmd_fmt(Invocation& inv) {
         std::cout << path << ": not formatted\n";
         status = kExitErrors;
       } else {
-        ksmc::runtime::io::write_file_atomic(path, text);
+        ksmc::runtime::io::rewrite_file_atomic(path, text);  // through links, mode kept
       }
     } else {
       std::cout << text;

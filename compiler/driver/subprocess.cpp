@@ -11,6 +11,8 @@
 #include <cstring>
 #include <system_error>
 
+#include "runtime/io/cancel.h"
+
 extern char** environ;
 
 namespace ksmc::compiler::driver {
@@ -52,7 +54,8 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::optio
   } else {
     posix_spawn_file_actions_adddup2(&actions, STDERR_FILENO, STDOUT_FILENO);
   }
-  // Ctrl-C reaches the child (same process group); we wait for it to stop and clean up
+  // Ctrl-C reaches the child (same process group); a SIGINT, SIGTERM or SIGHUP sent to us
+  // alone is forwarded to it (runtime/io/cancel.h). We wait for it to stop and clean up
   // instead of dying with it. The child gets the default handlers back.
   posix_spawnattr_t attr;
   posix_spawnattr_init(&attr);
@@ -60,14 +63,10 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::optio
   sigemptyset(&defaults);
   sigaddset(&defaults, SIGINT);
   sigaddset(&defaults, SIGTERM);
+  sigaddset(&defaults, SIGHUP);
   posix_spawnattr_setsigdefault(&attr, &defaults);
   posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGDEF);
-  struct sigaction ignore {};
-  ignore.sa_handler = SIG_IGN;
-  struct sigaction old_int {};
-  struct sigaction old_term {};
-  ::sigaction(SIGINT, &ignore, &old_int);
-  ::sigaction(SIGTERM, &ignore, &old_term);
+  const runtime::io::SignalGuard signals(/*clear=*/false);
 
   pid_t pid = 0;
   const int rc = posix_spawn(&pid, args[0], &actions, &attr, args.data(), environ);
@@ -76,6 +75,8 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::optio
   int status = 0;
   int wait_error = 0;
   if (rc == 0) {
+    runtime::io::SignalGuard::forward_to(pid);
+    if (runtime::io::cancel_requested()) ::kill(pid, runtime::io::cancel_signal() != 0 ? runtime::io::cancel_signal() : SIGINT);
     while (::waitpid(pid, &status, 0) < 0) {
       if (errno != EINTR) {
         wait_error = errno;
@@ -83,8 +84,7 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::optio
       }
     }
   }
-  ::sigaction(SIGINT, &old_int, nullptr);
-  ::sigaction(SIGTERM, &old_term, nullptr);
+  runtime::io::SignalGuard::forward_to(0);
   if (rc != 0) {
     result.error = std::strerror(rc);
     return result;

@@ -21,8 +21,9 @@ struct ProcessResult {
 inline constexpr int kExitInterrupted = 130;  // 128 + SIGINT
 
 // Runs argv[0] (a path) with argv, waits for it. Its stdout and stderr are appended to
-// `log` when given, else both go to this process's stderr. While it runs, SIGINT and SIGTERM
-// only stop the child (exit_code 128 + signal), so the caller can clean up.
+// `log` when given, else both go to this process's stderr. While it runs, SIGINT, SIGTERM
+// and SIGHUP only stop the child (exit_code 128 + signal) and are recorded
+// (runtime::io::cancel_requested()), so the caller can clean up.
 ProcessResult run_process(const std::vector<std::string>& argv, const std::optional<std::filesystem::path>& log);
 
 }  // namespace ksmc::compiler::driver

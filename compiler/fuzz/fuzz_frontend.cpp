@@ -12,6 +12,8 @@
 #include "compiler/build/loader.h"
 #include "compiler/driver/pipeline.h"
 #include "compiler/fmt/formatter.h"
+#include "compiler/fuzz/fuzz_files.h"
+#include "compiler/parse/parser.h"
 
 namespace {
 
@@ -45,6 +47,10 @@ Loaded load(const std::string& text) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  // ANTLR's prediction caches grow with every new input path: bound them (docs/reliability.md).
+  static const unsigned every = ksmc::fuzz::clear_caches_every();
+  static unsigned runs = 0;
+  if (every != 0 && ++runs % every == 0) ksmc::compiler::parse::clear_prediction_caches();
   const std::string text(reinterpret_cast<const char*>(data), size);
   const Loaded first = load(text);
   if (!first.ok) return 0;

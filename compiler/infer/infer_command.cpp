@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -139,6 +140,11 @@ int run_infer(const lower::MlnIr& ir, const InferRequest& request, std::ostream&
       return 2;
     }
     wanted[static_cast<std::size_t>(*p)] = true;
+  }
+  std::error_code dir_ec;
+  if (std::filesystem::is_directory(request.evidence_path, dir_ec)) {
+    err << request.evidence_path << ": error: evidence file expected, this is a folder\n";
+    return 1;
   }
   std::ifstream file(request.evidence_path, std::ios::binary);
   if (!file) {

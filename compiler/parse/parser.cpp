@@ -57,4 +57,15 @@ std::unique_ptr<ParsedFile> parse_text(int file, const std::string& text, diag::
   return out;
 }
 
+void clear_prediction_caches() {
+  antlr4::ANTLRInputStream input(std::string{});
+  ksmc_grammar::KsmLexer lexer(&input);
+  antlr4::CommonTokenStream tokens(&lexer);
+  ksmc_grammar::KsmParser parser(&tokens);
+  auto* interp = parser.getInterpreter<antlr4::atn::ParserATNSimulator>();
+  interp->clearDFA();
+  interp->getSharedContextCache().clear();
+  lexer.getInterpreter<antlr4::atn::LexerATNSimulator>()->clearDFA();
+}
+
 }  // namespace ksmc::compiler::parse

@@ -37,4 +37,10 @@ struct ParsedFile {
 // Parses the text of file `file` (registered in the SourceManager behind `diags`).
 std::unique_ptr<ParsedFile> parse_text(int file, const std::string& text, diag::DiagEngine& diags);
 
+// Drops ANTLR's process-wide prediction caches (lexer and parser DFA, shared prediction
+// contexts). They only grow: every input that takes a new prediction path adds states, so
+// a process parsing many distinct inputs (the fuzzers, a long-lived server) grows without
+// bound. Parsing stays correct afterwards; the caches refill. Not while another thread parses.
+void clear_prediction_caches();
+
 }  // namespace ksmc::compiler::parse

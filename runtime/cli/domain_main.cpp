@@ -1,6 +1,7 @@
 #include "runtime/cli/domain_main.h"
 
 #include <exception>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <optional>
@@ -11,6 +12,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include "runtime/cli/checked_flags.h"
 #include "runtime/cli/file_hash.h"
 #include "runtime/cli/interrupt.h"
 #include "runtime/cli/progress.h"
@@ -22,21 +24,54 @@ namespace ksmc::runtime::cli {
 
 namespace {
 
+// Counts are parsed as text and checked by parse_count (CLI11 would wrap "-5" to 2^64-5).
 struct CommonFlags {
-  std::uint64_t seed = 1;
-  std::uint64_t iterations = 0;
-  unsigned chains = 1;
-  unsigned threads = 0;
+  std::string seed = "1";
+  std::string iterations;
+  std::string chains = "1";
+  std::string threads = "0";
   std::string out;
-  std::uint64_t samples = 0;
-  std::uint64_t thin = 1;
-  std::optional<std::uint64_t> burn_in;
+  std::string samples = "0";
+  std::string thin = "1";
+  std::string burn_in;  // "" = half the iterations
   bool trace = false;
-  std::uint64_t trace_every = 0;
+  std::string trace_every = "0";
+  std::string max_input_mb = std::to_string(kDefaultMaxInputMb);
   bool quiet = false;
   std::string evidence_out;
   std::vector<std::string> inputs;
 };
+
+// The checked values of CommonFlags.
+struct Counts {
+  std::uint64_t seed = 1;
+  std::uint64_t iterations = 0;
+  unsigned chains = 1;
+  unsigned threads = 0;
+  std::uint64_t samples = 0;
+  std::uint64_t thin = 1;
+  std::optional<std::uint64_t> burn_in;
+  std::uint64_t trace_every = 0;
+  std::uint64_t max_input_bytes = 0;
+};
+
+Counts check_counts(const CommonFlags& cf) {
+  Counts c;
+  c.seed = parse_count("--seed", cf.seed);
+  c.iterations = parse_count("--iterations", cf.iterations, 1);
+  c.chains = static_cast<unsigned>(parse_count("--chains", cf.chains, 1, 4096));
+  c.threads = static_cast<unsigned>(parse_count("--threads", cf.threads, 0, 4096));
+  c.samples = parse_count("--samples", cf.samples);
+  c.thin = parse_count("--thin", cf.thin, 1);
+  if (!cf.burn_in.empty()) c.burn_in = parse_count("--burn-in", cf.burn_in);
+  c.trace_every = parse_count("--trace-every", cf.trace_every);
+  const std::uint64_t mb = parse_count("--max-input-mb", cf.max_input_mb, 1);
+  c.max_input_bytes = mb > kCountMax / 1000000 ? kCountMax : mb * 1000000;
+  if (c.burn_in && *c.burn_in > c.iterations) {
+    throw UsageError(fmt::format("--burn-in {} exceeds --iterations {}", *c.burn_in, c.iterations));
+  }
+  return c;
+}
 
 // Holds the domain flag values while CLI11 parses (std::map: stable addresses).
 struct DomainFlagStorage {
@@ -115,6 +150,15 @@ int failure(const CliStreams& io, const DomainSpec& spec, const std::exception& 
   return kExitInternal;
 }
 
+// A failure after a signal: the computation gave up (io::Cancelled, or an error caused by
+// stopping early) before there was a state to write. The previous outputs are untouched.
+int failure_or_interrupted(const CliStreams& io, const DomainSpec& spec, const std::exception& e) {
+  if (!InterruptGuard::interrupted()) return failure(io, spec, e);
+  io.err << spec.name << ": interrupted by " << InterruptGuard::signal_name()
+         << " before a state existed; nothing written (any earlier outputs are untouched)\n";
+  return InterruptGuard::exit_code();
+}
+
 }  // namespace
 
 int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec) {
@@ -124,7 +168,7 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec) {
 
 int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, const CliStreams& io) {
   CommonFlags cf;
-  cf.iterations = spec.default_iterations;
+  cf.iterations = std::to_string(spec.default_iterations);
   cf.out = spec.name + "_out";
   DomainFlagStorage dst;
 
@@ -134,14 +178,15 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
     app.add_option("inputs", cf.inputs, spec.inputs_help)->type_name("INPUT");
     app.add_option("--seed", cf.seed, "random seed; same seed, same result")->capture_default_str();
     app.add_option("--iterations", cf.iterations, "iterations per chain")->capture_default_str();
-    app.add_option("--chains", cf.chains, "independent chains")->check(CLI::Range(1U, 4096U))->capture_default_str();
+    app.add_option("--chains", cf.chains, "independent chains (1 to 4096)")->capture_default_str();
     app.add_option("--threads", cf.threads, "threads for the chains (0 = one per core)")->capture_default_str();
     app.add_option("--out", cf.out, "output folder (created if missing)")->type_name("DIR")->capture_default_str();
     app.add_option("--samples", cf.samples, "posterior samples to store per chain (samples.jsonl)")->capture_default_str();
-    app.add_option("--thin", cf.thin, "iterations between stored samples")->check(CLI::PositiveNumber)->capture_default_str();
+    app.add_option("--thin", cf.thin, "iterations between stored samples")->capture_default_str();
     app.add_option("--burn-in", cf.burn_in, "iterations before samples are taken (default: half)");
     app.add_flag("--trace", cf.trace, "write trace.csv (log posterior and acceptance rate per chain)");
     app.add_option("--trace-every", cf.trace_every, "iterations between trace rows (default: iterations/1000; implies --trace)");
+    app.add_option("--max-input-mb", cf.max_input_mb, "largest input file read, in MB")->capture_default_str();
     app.add_flag("--quiet,-q", cf.quiet, "no progress display");
     app.add_option("--evidence-out", cf.evidence_out,
                    "write the best state's evidence as an Alchemy .db (replay with ksmc infer --evidence)")
@@ -152,6 +197,7 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
   }
 
   FlagValues domain_flags;
+  Counts counts;
   try {
     app.parse(argc, argv);
     if (cf.inputs.size() < spec.min_inputs || cf.inputs.size() > spec.max_inputs) {
@@ -160,9 +206,7 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
                            : fmt::format("expected {} to {} {}, got {}", spec.min_inputs, spec.max_inputs,
                                          spec.inputs_help, cf.inputs.size()));
     }
-    if (cf.burn_in && *cf.burn_in > cf.iterations) {
-      throw UsageError(fmt::format("--burn-in {} exceeds --iterations {}", *cf.burn_in, cf.iterations));
-    }
+    counts = check_counts(cf);
     domain_flags = collect_domain_flags(spec, dst);
   } catch (const CLI::CallForHelp&) {
     io.out << app.help();
@@ -182,19 +226,22 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
   DomainInput input;
   for (const auto& p : cf.inputs) input.inputs.emplace_back(p);
   input.flags = domain_flags;
-  input.seed = cf.seed;
-  input.chains = cf.chains;
+  input.seed = counts.seed;
+  input.chains = counts.chains;
   input.out_dir = cf.out;
 
+  // From here on SIGINT, SIGTERM and SIGHUP only request cancellation (interrupt.h).
+  InterruptGuard guard;
   DomainSetup setup;
   try {
+    for (const auto& p : input.inputs) check_input_file(p, counts.max_input_bytes);
     setup = spec.load(input);
     if (!cf.evidence_out.empty() && !setup.evidence_db)
       throw UsageError(fmt::format("--evidence-out: domain '{}' has no evidence to write", spec.name));
   } catch (const UsageError& e) {
     return usage_error(io, spec, e.what());
   } catch (const std::exception& e) {
-    return failure(io, spec, e);
+    return failure_or_interrupted(io, spec, e);
   }
 
   std::unique_ptr<mcmc::Engine> engine;
@@ -210,29 +257,32 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
   }
 
   mcmc::EngineConfig cfg;
-  cfg.iterations = cf.iterations;
-  cfg.seed = cf.seed;
-  cfg.chains = cf.chains;
-  cfg.threads = cf.threads;
-  cfg.burn_in = cf.burn_in.value_or(cf.iterations / 2);
-  cfg.samples = cf.samples;
-  cfg.thin = cf.thin;
-  if (cf.trace_every != 0) cf.trace = true;  // --trace-every implies --trace
-  if (cf.trace) cfg.trace_every = cf.trace_every != 0 ? cf.trace_every : std::max<std::uint64_t>(1, cf.iterations / 1000);
+  cfg.iterations = counts.iterations;
+  cfg.seed = counts.seed;
+  cfg.chains = counts.chains;
+  cfg.threads = counts.threads;
+  cfg.burn_in = counts.burn_in.value_or(counts.iterations / 2);
+  cfg.samples = counts.samples;
+  cfg.thin = counts.thin;
+  if (counts.trace_every != 0) cf.trace = true;  // --trace-every implies --trace
+  if (cf.trace) {
+    cfg.trace_every = counts.trace_every != 0 ? counts.trace_every : std::max<std::uint64_t>(1, counts.iterations / 1000);
+  }
   ProgressPrinter printer(io.err, io.tty);
   if (!cf.quiet) cfg.progress = [&printer](const mcmc::Progress& p) { printer(p); };
 
-  InterruptGuard guard;
   cfg.cancel = &InterruptGuard::flag();
   mcmc::RunResult result;
   try {
     result = engine->run(cfg);
   } catch (const std::exception& e) {
-    return failure(io, spec, e);
+    return failure_or_interrupted(io, spec, e);
   }
   const bool interrupted = result.cancelled || InterruptGuard::interrupted();
   if (interrupted) {
-    io.err << spec.name << ": interrupted after " << result.iterations << " iterations; writing outputs\n";
+    io.err << spec.name << ": interrupted by " << InterruptGuard::signal_name() << " after " << result.iterations
+           << " iterations; writing the outputs of the best state so far\n";
+    info.interrupted = InterruptGuard::signal_name();
   }
 
   info.domain_name = spec.name;
@@ -244,22 +294,35 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
       std::unique_ptr<mcmc::Model> best = setup.model_factory(static_cast<unsigned>(result.best_chain));
       best->restore(result.best().best_state);
       if (setup.write_results) setup.write_results(result, *best, *out);
-      if (!cf.evidence_out.empty()) runtime::io::write_file_atomic(cf.evidence_out, setup.evidence_db(*best));
+      if (!cf.evidence_out.empty()) {
+        // Inside the output folder it joins the folder's other files (written as a whole);
+        // elsewhere it is a file of its own, written atomically.
+        const std::filesystem::path db = std::filesystem::weakly_canonical(std::filesystem::absolute(cf.evidence_out));
+        const std::filesystem::path folder = std::filesystem::weakly_canonical(std::filesystem::absolute(out->target()));
+        if (db.parent_path() == folder) {
+          out->write(db.filename().string(), setup.evidence_db(*best));
+        } else {
+          runtime::io::write_file_atomic(cf.evidence_out, setup.evidence_db(*best));
+        }
+      }
     }
     out->write("best_state.json", best_state_json(result).dump(2) + "\n");
     if (cfg.trace_every != 0) out->write("trace.csv", trace_csv(result));
     if (cfg.samples != 0) out->write("samples.jsonl", samples_jsonl(result));
-    info.outputs = out->written();
+    info.outputs = out->manifest();
     out->write("summary.json", make_summary(result, engine->schedule(), info).dump(2) + "\n");
+    out->commit();  // the whole folder at once
   } catch (const std::exception& e) {
-    return failure(io, spec, e);
+    if (is_config_error(e)) return failure(io, spec, e);
+    return failure(io, spec, fmt::format("{} (nothing written: any earlier outputs in {} are untouched)", e.what(),
+                                         out->target().string()));
   }
   if (!cf.quiet) {
     io.err << fmt::format("{}: best log posterior {} (chain {}, iteration {}); outputs in {}\n", spec.name,
                           result.best().best_log_posterior, result.best_chain, result.best().best_iteration,
-                          out->dir().string());
+                          out->target().string());
   }
-  return interrupted ? kExitInterrupted : kExitOk;
+  return interrupted ? InterruptGuard::exit_code() : kExitOk;
 }
 
 }  // namespace ksmc::runtime::cli

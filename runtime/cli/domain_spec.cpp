@@ -49,22 +49,16 @@ void FlagValues::set(const std::string& name, std::string value, bool given) {
   if (given) given_.insert(name);
 }
 
-OutputDir::OutputDir(std::filesystem::path dir) : dir_(std::move(dir)) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir_, ec);
-  if (ec || !std::filesystem::is_directory(dir_)) {
-    throw std::runtime_error(fmt::format("{}: cannot create output folder: {}", dir_.string(),
-                                         ec ? ec.message() : "not a directory"));
-  }
-}
+OutputDir::OutputDir(std::filesystem::path dir)
+    : target_(std::move(dir)), staged_(std::make_shared<io::StagedDir>(target_)) {}
 
 void OutputDir::write(const std::string& name, std::string_view data) {
-  io::write_file_atomic(dir_ / name, data);
+  io::write_file_atomic(staged_->staging() / name, data);
   written_.push_back(name);
 }
 
 void OutputDir::write(const std::string& name, std::span<const unsigned char> data) {
-  io::write_file_atomic(dir_ / name, data);
+  io::write_file_atomic(staged_->staging() / name, data);
   written_.push_back(name);
 }
 

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
 #include <set>
 #include <span>
 #include <stdexcept>
@@ -22,6 +23,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "runtime/io/staged_dir.h"
 #include "runtime/mcmc/engine.h"
 
 namespace ksmc::runtime::cli {
@@ -68,18 +70,27 @@ struct DomainInput {
   std::filesystem::path out_dir;
 };
 
-// The output folder: every file written atomically (runtime/io/atomic_file.h).
+// The output folder of a run, written as a whole (runtime/io/staged_dir.h): files go into
+// a staging folder beside the target (dir()), and commit() renames it into place, so the
+// target holds either the previous complete outputs or the new ones, never a mix, and no
+// stale file of an earlier run. Destroyed uncommitted (error, exception), it leaves the
+// previous outputs untouched. Kits writing files themselves must write under dir().
 class OutputDir {
  public:
-  explicit OutputDir(std::filesystem::path dir);  // creates it; throws naming the folder
+  explicit OutputDir(std::filesystem::path dir);  // checks the target; throws naming the folder
   void write(const std::string& name, std::string_view data);
   void write(const std::string& name, std::span<const unsigned char> data);
-  std::filesystem::path path_of(const std::string& name) const { return dir_ / name; }
-  const std::filesystem::path& dir() const noexcept { return dir_; }
+  std::filesystem::path path_of(const std::string& name) const { return staged_->staging() / name; }
+  const std::filesystem::path& dir() const noexcept { return staged_->staging(); }  // where to write now
+  const std::filesystem::path& target() const noexcept { return target_; }          // as given (--out)
   const std::vector<std::string>& written() const noexcept { return written_; }
+  // Every file now in the folder (domain files included), with size and SHA-256.
+  std::vector<io::StagedDir::Entry> manifest(std::string_view skip = {}) const { return staged_->manifest(skip); }
+  void commit() { staged_->commit(); }
 
  private:
-  std::filesystem::path dir_;
+  std::filesystem::path target_;
+  std::shared_ptr<io::StagedDir> staged_;
   std::vector<std::string> written_;
 };
 

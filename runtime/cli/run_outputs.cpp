@@ -42,7 +42,8 @@ nlohmann::json make_summary(const mcmc::RunResult& r, const mcmc::Schedule& sche
   j["iterations"] = r.iterations;
   j["burn_in"] = info.config.burn_in;
   j["thin"] = info.config.thin;
-  j["cancelled"] = r.cancelled;
+  j["cancelled"] = r.cancelled || !info.interrupted.empty();
+  j["interrupted"] = info.interrupted.empty() ? nlohmann::json(nullptr) : nlohmann::json(info.interrupted);
   j["seconds"] = r.seconds;
   j["iterations_per_second"] = r.seconds > 0.0 ? static_cast<double>(r.iterations) / r.seconds : 0.0;
   j["acceptance_rate"] = r.acceptance_rate();
@@ -82,7 +83,9 @@ nlohmann::json make_summary(const mcmc::RunResult& r, const mcmc::Schedule& sche
     inputs.push_back({{"path", h.path.string()}, {"bytes", h.bytes}, {"fnv1a64", h.hex()}});
   }
   j["inputs"] = std::move(inputs);
-  j["outputs"] = info.outputs;
+  nlohmann::json outputs = nlohmann::json::array();
+  for (const auto& f : info.outputs) outputs.push_back({{"path", f.path}, {"bytes", f.bytes}, {"sha256", f.sha256}});
+  j["outputs"] = std::move(outputs);
   return j;
 }
 

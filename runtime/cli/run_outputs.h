@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "runtime/cli/file_hash.h"
+#include "runtime/io/staged_dir.h"
 #include "runtime/mcmc/engine.h"
 
 namespace ksmc::runtime::cli {
@@ -25,7 +26,8 @@ struct RunInfo {
   std::string domain_version;
   mcmc::EngineConfig config;           // the effective settings of the run
   std::vector<FileHash> inputs;        // positional inputs, then the domain's extra inputs
-  std::vector<std::string> outputs;    // files written before summary.json
+  std::vector<io::StagedDir::Entry> outputs;  // every file of the folder but summary.json
+  std::string interrupted;             // the signal that stopped the run ("SIGTERM"), "" = none
   nlohmann::json domain_extra = nlohmann::json::object();
 };
 

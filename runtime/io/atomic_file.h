@@ -12,4 +12,9 @@ namespace ksmc::runtime::io {
 void write_file_atomic(const std::filesystem::path& path, std::string_view data);
 void write_file_atomic(const std::filesystem::path& path, std::span<const unsigned char> data);
 
+// Replaces the contents of an existing file atomically, in place: a symbolic link is
+// followed (the link stays a link; its target gets the new contents) and the file's
+// permission bits are kept (ksmc fmt --in-place).
+void rewrite_file_atomic(const std::filesystem::path& path, std::string_view data);
+
 }  // namespace ksmc::runtime::io

@@ -1,5 +1,7 @@
 #include "runtime/mln/evidence.h"
 
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -102,14 +104,23 @@ bool parse_line(std::string_view line, const std::string& where, ParsedAtom& out
 // Calls fn(where, atom, predicate) for every atom line, after the checks every pass shares.
 template <typename Fn>
 void for_each_atom(std::string_view text, const std::string& filename, const Program& program, Fn&& fn) {
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // UTF-8 byte order mark
+  if (const auto nul = text.find('\0'); nul != std::string_view::npos) {
+    const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(nul), '\n');
+    throw MlnError(filename + ":" + std::to_string(line) + ": NUL byte at offset " + std::to_string(nul) +
+                   " (a binary file, or UTF-16? evidence must be UTF-8 text)");
+  }
   std::int32_t line_no = 0;
   std::size_t pos = 0;
   ParsedAtom atom;
   while (pos <= text.size()) {
-    const auto nl = text.find('\n', pos);
+    // Lines end with \n, \r\n or a lone \r (old Mac files).
+    const auto nl = text.find_first_of("\r\n", pos);
     const std::string_view line =
         text.substr(pos, nl == std::string_view::npos ? std::string_view::npos : nl - pos);
-    pos = nl == std::string_view::npos ? text.size() + 1 : nl + 1;
+    pos = nl == std::string_view::npos                                       ? text.size() + 1
+          : text[nl] == '\r' && nl + 1 < text.size() && text[nl + 1] == '\n' ? nl + 2
+                                                                              : nl + 1;
     ++line_no;
     const auto where = filename + ":" + std::to_string(line_no) + ": ";
     if (!parse_line(line, where, atom)) continue;
@@ -176,6 +187,8 @@ void parse_db(std::string_view text, const std::string& filename, const Program&
 }
 
 std::string read_text_file(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw MlnError(path + ": evidence file expected, this is a folder");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw MlnError(path + ": cannot open evidence file");
   std::ostringstream ss;

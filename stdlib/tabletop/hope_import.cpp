@@ -5,6 +5,7 @@
 #include <map>
 #include <sstream>
 
+#include "runtime/io/json_error.h"
 #include "stdlib/tabletop/json_reader.h"
 
 namespace ksmc::stdlib::tabletop {
@@ -132,10 +133,11 @@ HopeImport import_hope_file(const std::filesystem::path& path, const HopeImportO
   std::stringstream buf;
   buf << in.rdbuf();
   json doc;
+  const std::string text = buf.str();
   try {
-    doc = json::parse(buf.str());
-  } catch (const json::parse_error& e) {
-    throw SceneError(fmt::format("{}: invalid JSON: {}", name, e.what()));
+    doc = json::parse(text);
+  } catch (const json::exception& e) {  // parse_error, and out_of_range for 1e999
+    throw SceneError(ksmc::runtime::io::json_error_message(name, text, e));
   }
   return import_hope(doc, name, options);
 }

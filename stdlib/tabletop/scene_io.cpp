@@ -10,6 +10,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "runtime/io/json_error.h"
+
 namespace ksmc::stdlib::tabletop {
 
 namespace {
@@ -116,10 +118,11 @@ SceneLoad load_scene(const std::filesystem::path& path, const SceneOptions& opti
   std::stringstream buf;
   buf << in.rdbuf();
   nlohmann::json doc;
+  const std::string text = buf.str();
   try {
-    doc = nlohmann::json::parse(buf.str());
-  } catch (const nlohmann::json::parse_error& e) {
-    throw SceneError(fmt::format("{}: invalid JSON: {}", name, e.what()));
+    doc = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for 1e999
+    throw SceneError(ksmc::runtime::io::json_error_message(name, text, e));
   }
   return parse_scene(doc, name, path.parent_path(), options);
 }

@@ -15,6 +15,7 @@
 #include "runtime/cli/domain_main.h"
 #include "runtime/cli/file_hash.h"
 #include "runtime/cli/run_outputs.h"
+#include "runtime/io/sha256.h"
 #include "tests/mcmc/toy_domain.h"
 
 namespace fs = std::filesystem;
@@ -99,6 +100,17 @@ TEST_CASE("cli: usage errors exit 2 with a message") {
       {{"--iterations", "many", in.string()}, "many"},
       {{"--chains", "0", in.string()}, "chains"},
       {{"--thin", "0", in.string()}, "thin"},
+      {{"--iterations", "-5", in.string()}, "--iterations: expected a whole number from 1 to 18446744073709551615, got '-5' (negative)"},
+      {{"--iterations=-5", in.string()}, "got '-5' (negative)"},
+      {{"--iterations", "0", in.string()}, "--iterations: expected a whole number from 1"},
+      {{"--seed", "-1", in.string()}, "--seed: expected a whole number from 0 to 18446744073709551615, got '-1'"},
+      {{"--seed", "99999999999999999999999", in.string()}, "got '99999999999999999999999' (too large)"},
+      {{"--burn-in", "-1", in.string()}, "--burn-in: expected a whole number from 0"},
+      {{"--samples", "-3", in.string()}, "--samples: expected a whole number"},
+      {{"--threads", "-1", in.string()}, "--threads: expected a whole number from 0 to 4096"},
+      {{"--chains", "5000", in.string()}, "--chains: expected a whole number from 1 to 4096"},
+      {{"--trace-every", "1e3", in.string()}, "--trace-every: expected a whole number"},
+      {{"--max-input-mb", "0", in.string()}, "--max-input-mb: expected a whole number from 1"},
       {{}, "expected 1 toy.json, got 0"},
       {{in.string(), in.string()}, "expected 1 toy.json, got 2"},
       {{"--start-override", "x", in.string()}, "--start-override: expected an integer, got 'x'"},
@@ -139,6 +151,29 @@ TEST_CASE("cli: bad input and unwritable output exit 1 naming the file") {
   CHECK(r.code == 1);
   CHECK(r.err.find((blocker / "sub").string()) != std::string::npos);
   CHECK(files_in(d.path) == std::vector<std::string>{"bad.json", "file", "small.json", "toy.json"});
+
+  // Inputs must be regular files under the size limit.
+  r = run({d.path.string(), "--out", (d.path / "o4").string(), "--quiet"});
+  CHECK(r.code == 1);
+  CHECK(r.err.find(d.path.string() + ": expected a regular file, this is a folder") != std::string::npos);
+  r = run({"/dev/zero", "--out", (d.path / "o5").string(), "--quiet"});
+  CHECK(r.code == 1);
+  CHECK(r.err.find("/dev/zero: expected a regular file, this is a character device") != std::string::npos);
+  const auto big = d.write("big.json", R"({"n": 20})" + std::string(1500000, ' '));
+  r = run({big.string(), "--out", (d.path / "o6").string(), "--quiet", "--max-input-mb", "1"});
+  CHECK(r.code == 1);
+  CHECK(r.err.find("big.json: 1.5 MB exceeds the input size limit of 1 MB (raise it with --max-input-mb)") !=
+        std::string::npos);
+  r = run({big.string(), "--out", (d.path / "o6").string(), "--quiet", "--max-input-mb", "2", "--iterations", "10"});
+  CHECK(r.code == 0);
+
+  // An existing folder that is not an earlier output is never replaced.
+  fs::create_directories(d.path / "mine");
+  d.write("mine/notes.txt", "keep");
+  r = run({good.string(), "--out", (d.path / "mine").string(), "--quiet", "--iterations", "10"});
+  CHECK(r.code == 1);
+  CHECK(r.err.find("refusing to replace it") != std::string::npos);
+  CHECK(files_in(d.path / "mine") == std::vector<std::string>{"notes.txt"});
 }
 
 TEST_CASE("cli: a full run writes complete outputs atomically and a correct summary") {
@@ -174,8 +209,16 @@ TEST_CASE("cli: a full run writes complete outputs atomically and a correct summ
   CHECK(s.at("inputs")[0].at("path") == in.string());
   CHECK(s.at("inputs")[0].at("bytes") == input_text.size());
   CHECK(s.at("inputs")[0].at("fnv1a64") == fmt::format("{:016x}", cli::fnv1a64(input_text)));
-  CHECK(s.at("outputs") ==
-        nlohmann::json::array({"toy_result.json", "best_state.json", "trace.csv", "samples.jsonl"}));
+  CHECK(s.at("interrupted").is_null());
+  // Every file of the folder but summary.json itself, sorted, with size and SHA-256.
+  std::vector<std::string> listed;
+  for (const auto& f : s.at("outputs")) {
+    listed.push_back(f.at("path"));
+    const std::string text = slurp(out / f.at("path").get<std::string>());
+    CHECK(f.at("bytes") == text.size());
+    CHECK(f.at("sha256") == ksmc::runtime::io::sha256_hex(text));
+  }
+  CHECK(listed == std::vector<std::string>{"best_state.json", "samples.jsonl", "toy_result.json", "trace.csv"});
   std::uint64_t selected = 0;
   std::vector<std::string> names;
   for (const auto& k : s.at("kernels")) {
@@ -210,6 +253,12 @@ TEST_CASE("cli: a full run writes complete outputs atomically and a correct summ
                     "acceptance_window,acceptance_total,acceptance_UP,acceptance_DOWN,acceptance_RESAMPLE\n",
                     0) == 0);
   CHECK(std::count(trace.begin(), trace.end(), '\n') == 1 + 2 * 20);
+
+  // A second run into the same folder with other flags leaves no file of the first.
+  const Run again = run({in.string(), "--iterations", "100", "--out", out.string(), "--quiet"});
+  REQUIRE(again.code == 0);
+  CHECK(files_in(out) == std::vector<std::string>{"best_state.json", "summary.json", "toy_result.json"});
+  CHECK(files_in(out.parent_path()) == std::vector<std::string>{"nested"});  // no staging folder left
 }
 
 TEST_CASE("cli: same seed, same outputs; TTY progress bar") {
@@ -240,10 +289,11 @@ TEST_CASE("cli: Ctrl-C stops the run, writes complete outputs, exit 130") {
   const Run r = run({in.string(), "--iterations", "100000000", "--interrupt-at", "2000", "--samples", "3",
                      "--burn-in", "0", "--trace", "--out", out.string(), "--quiet"});
   CHECK(r.code == 130);
-  CHECK(r.err.find("interrupted") != std::string::npos);
+  CHECK(r.err.find("interrupted by SIGINT") != std::string::npos);
   REQUIRE(fs::exists(out / "summary.json"));
   const auto s = nlohmann::json::parse(slurp(out / "summary.json"));
   CHECK(s.at("cancelled") == true);
+  CHECK(s.at("interrupted") == "SIGINT");
   CHECK(s.at("iterations").get<std::uint64_t>() < 100000000);
   CHECK(files_in(out) == std::vector<std::string>{"best_state.json", "samples.jsonl", "summary.json",
                                                   "toy_result.json", "trace.csv"});

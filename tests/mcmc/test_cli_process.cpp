@@ -1,5 +1,6 @@
-// End to end: the toy domain binary gets a real SIGINT from outside while sampling; it
-// must stop, write complete outputs (no temporaries) and exit with 130.
+// End to end: the toy domain binary gets real signals from outside while sampling.
+// SIGINT (also twice), SIGTERM and SIGHUP stop it; it writes complete outputs marked with
+// the signal and exits 128 + signal. SIGKILL leaves the previous output folder intact.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -19,23 +20,45 @@
 
 namespace fs = std::filesystem;
 
-TEST_CASE("cli process: SIGINT from outside -> clean stop, complete outputs, exit 130") {
+namespace {
+
+struct Sandbox {
+  fs::path dir;
+  explicit Sandbox(const std::string& name) : dir(fs::temp_directory_path() / ("ksmc_cli_process_" + name)) {
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    std::ofstream(dir / "toy.json") << R"({"n": 20, "start": 2})";
+  }
+  ~Sandbox() { fs::remove_all(dir); }
+};
+
+std::vector<std::string> names_in(const fs::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream f(p, std::ios::binary);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+// Starts the toy binary on a practically endless run, waits until it samples, sends
+// `signals` (10 ms apart) and returns its wait status (fails after 30 s).
+int run_and_signal(const Sandbox& s, const fs::path& out, const std::vector<int>& signals) {
   const fs::path exe = fs::path(KSMC_BINARY_DIR) / "bin" / "ksmc_toy_domain";
   REQUIRE(fs::exists(exe));
-  const fs::path dir = fs::temp_directory_path() / "ksmc_cli_process";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  std::ofstream(dir / "toy.json") << R"({"n": 20, "start": 2})";
-  const fs::path out = dir / "out";
-  const fs::path ready = dir / "ready";
-
-  std::vector<std::string> args = {exe.string(), (dir / "toy.json").string(), "--iterations", "100000000000",
+  const fs::path ready = s.dir / "ready";
+  fs::remove(ready);
+  std::vector<std::string> args = {exe.string(), (s.dir / "toy.json").string(), "--iterations", "100000000000",
                                    "--chains", "2", "--trace", "--samples", "5", "--burn-in", "0",
                                    "--out", out.string(), "--ready-file", ready.string()};
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
-
   const pid_t pid = ::fork();
   REQUIRE(pid >= 0);
   if (pid == 0) {
@@ -44,16 +67,18 @@ TEST_CASE("cli process: SIGINT from outside -> clean stop, complete outputs, exi
     ::execv(argv[0], argv.data());
     ::_exit(127);
   }
-  // Wait until sampling has started (the handler is installed by then), at most 60 s.
   const auto start = std::chrono::steady_clock::now();
   while (!fs::exists(ready) && std::chrono::steady_clock::now() - start < std::chrono::seconds(60)) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   const bool started = fs::exists(ready);
   std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  ::kill(pid, started ? SIGINT : SIGKILL);
+  if (!started) ::kill(pid, SIGKILL);
+  for (const int sig : signals) {
+    if (started) ::kill(pid, sig);
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
   int status = 0;
-  // Give it time to stop and write; kill it if it hangs.
   pid_t done = 0;
   for (int i = 0; i < 3000 && done == 0; ++i) {
     done = ::waitpid(pid, &status, WNOHANG);
@@ -62,21 +87,59 @@ TEST_CASE("cli process: SIGINT from outside -> clean stop, complete outputs, exi
   if (done == 0) {
     ::kill(pid, SIGKILL);
     ::waitpid(pid, &status, 0);
-    FAIL("the domain binary did not stop within 30 s of SIGINT");
+    FAIL("the domain binary did not stop within 30 s of the signal");
   }
   REQUIRE(started);
-  REQUIRE(WIFEXITED(status));
-  CHECK(WEXITSTATUS(status) == 130);
+  return status;
+}
 
-  std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(out)) names.push_back(e.path().filename().string());
-  std::sort(names.begin(), names.end());
-  CHECK(names == std::vector<std::string>{"best_state.json", "samples.jsonl", "summary.json", "toy_result.json",
-                                          "trace.csv"});
-  std::ifstream f(out / "summary.json");
-  const auto summary = nlohmann::json::parse(f);
+bool staging_left(const fs::path& out) {
+  const auto names = names_in(out.parent_path());
+  return std::any_of(names.begin(), names.end(), [](const std::string& n) { return n.rfind(".out.", 0) == 0; });
+}
+
+void check_complete(const fs::path& out, const std::string& signal) {
+  CHECK(names_in(out) == std::vector<std::string>{"best_state.json", "samples.jsonl", "summary.json",
+                                                  "toy_result.json", "trace.csv"});
+  const auto summary = nlohmann::json::parse(slurp(out / "summary.json"));
   CHECK(summary.at("cancelled") == true);
+  CHECK(summary.at("interrupted") == signal);
   CHECK(summary.at("iterations").get<std::uint64_t>() > 0);
   CHECK(summary.at("chain_results").size() == 2);
-  fs::remove_all(dir);
+  CHECK(summary.at("outputs").size() == 4);
+}
+
+}  // namespace
+
+TEST_CASE("cli process: SIGINT, SIGINT twice, SIGTERM, SIGHUP -> complete outputs, exit 128 + signal") {
+  struct Case {
+    std::vector<int> signals;
+    std::string name;
+    int code;
+  };
+  for (const Case& c : {Case{{SIGINT}, "SIGINT", 130}, Case{{SIGINT, SIGINT, SIGINT}, "SIGINT", 130},
+                        Case{{SIGTERM}, "SIGTERM", 143}, Case{{SIGHUP}, "SIGHUP", 129}}) {
+    INFO(c.name << " x" << c.signals.size());
+    Sandbox s("signals");
+    const int status = run_and_signal(s, s.dir / "out", c.signals);
+    REQUIRE(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == c.code);
+    check_complete(s.dir / "out", c.name);
+    CHECK_FALSE(staging_left(s.dir / "out"));
+  }
+}
+
+TEST_CASE("cli process: SIGKILL mid-run leaves the previous output folder intact") {
+  Sandbox s("kill");
+  const fs::path out = s.dir / "out";
+  REQUIRE(WEXITSTATUS(run_and_signal(s, out, {SIGTERM})) == 143);
+  const std::string before = slurp(out / "summary.json");
+  const int status = run_and_signal(s, out, {SIGKILL});
+  CHECK(WIFSIGNALED(status));
+  CHECK(slurp(out / "summary.json") == before);
+  check_complete(out, "SIGTERM");  // the earlier run's folder, untouched ...
+  CHECK(staging_left(out));         // ... beside the killed run's hidden staging folder,
+  REQUIRE(WEXITSTATUS(run_and_signal(s, out, {SIGHUP})) == 129);
+  check_complete(out, "SIGHUP");
+  CHECK_FALSE(staging_left(out));  // which the next run removed
 }

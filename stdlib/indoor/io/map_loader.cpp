@@ -89,11 +89,21 @@ OccupancyMap build_map(const fs::path& image, const Thresholds& t, const std::st
   return m;
 }
 
+// Plausible metres per cell: 0.1 mm to 1 km. Outside, a typo (1e-300, 1e300) would reach
+// the detectors as absurd cell counts instead of a message naming the file.
+constexpr double kMinResolution = 1e-4;
+constexpr double kMaxResolution = 1e3;
+
 void check_resolution_option(const fs::path& file, double r) {
   if (!(r > 0.0) || !std::isfinite(r)) {
     throw MapLoadError(MapErrorKind::BadOption, file, 0,
                        fmt::format("resolution must be a positive number of metres per cell, got {}",
                                    r));
+  }
+  if (r < kMinResolution || r > kMaxResolution) {
+    throw MapLoadError(MapErrorKind::BadOption, file, 0,
+                       fmt::format("resolution {} metres per cell is outside the plausible range [{}, {}]", r,
+                                   kMinResolution, kMaxResolution));
   }
 }
 
@@ -132,6 +142,11 @@ OccupancyMap load_map_yaml(const fs::path& yaml, const YamlLoadOptions& opts) {
   if (!(yaml_res > 0.0)) {
     throw MapLoadError(MapErrorKind::YamlBadValue, yaml, line_of(res_node),
                        fmt::format("'resolution' must be positive, got {}", yaml_res));
+  }
+  if (yaml_res < kMinResolution || yaml_res > kMaxResolution) {
+    throw MapLoadError(MapErrorKind::YamlBadValue, yaml, line_of(res_node),
+                       fmt::format("'resolution' {} metres per cell is outside the plausible range [{}, {}]",
+                                   res_node.Scalar(), kMinResolution, kMaxResolution));
   }
 
   Thresholds t;

@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "runtime/io/json_error.h"
+
 #include "stdlib/indoor/io/image_file.h"
 #include "stdlib/indoor/io/map_error.h"
 #include "stdlib/indoor/io/world_json.h"
@@ -74,6 +76,8 @@ WorldResult parse_world_json(const std::string& text, const std::string& name) {
     const std::size_t upto = std::min<std::size_t>(e.byte, text.size());
     const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(upto), '\n');
     throw WorldJsonError(name + ":" + std::to_string(line) + ": error: JSON syntax: " + e.what());
+  } catch (const json::exception& e) {  // out_of_range: a number such as 1e999
+    throw WorldJsonError(ksmc::runtime::io::json_error_message(name, text, e));
   }
   const Reader r{name};
   WorldResult w;
