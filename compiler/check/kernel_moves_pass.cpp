@@ -23,6 +23,10 @@ bool same(const ast::MoveSpec& a, const ast::MoveSpec& b) {
 
 void kernel(Context& ctx, const ast::KernelDecl& k, const ast::Loc& at) {
   if (!k.pair && k.reverse && k.reverse->name != k.name.name) return;  // the kernels pass refused it
+  if (k.sources.empty()) {
+    ctx.diags.error(at, "kernel '" + k.name.name + "' has no proposal source; write 'kernel ... = source(...), ...;'");
+    return;
+  }
   const ast::MoveSpec* move = nullptr;
   const ast::Call* maker = nullptr;
   std::vector<std::pair<const ast::Call*, const ast::MoveSpec*>> helpers;

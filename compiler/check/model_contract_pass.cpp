@@ -60,7 +60,16 @@ void ModelContractPass::run(Context& ctx) {
   }
   for (const Scope& sc : collect_scopes(ctx.main()))
     for (const ast::Call* c : sc.calls) reads(ctx, *c, model);
-  if (model == nullptr) return;
+  if (model == nullptr) {
+    const ast::ModelContractDecl* contract = model_contract(ctx.program, ctx.symbols);
+    for (const ast::Item& item : ctx.main().items) {
+      if (contract != nullptr && std::holds_alternative<ast::LikelihoodDecl>(item.node)) {
+        ctx.diags.error(item.loc, "the kit of this likelihood runs a model: declare 'model NAME { ... }' with the variables of its extern model(...)");
+        break;
+      }
+    }
+    return;
+  }
 
   // One run-time type.
   std::string runtime_type;

@@ -14,10 +14,8 @@
 
 #include <string>
 
-#include "compiler/ast/ast.h"
-#include "compiler/check/symbols.h"
-#include "compiler/diag/source_manager.h"
 #include "compiler/emit/emit_factors.h"
+#include "compiler/lower/domain_ir.h"
 
 namespace ksmc::compiler::emit {
 
@@ -27,14 +25,7 @@ struct ModelOutput {
   GeneratedFile main;
 };
 
-// `kit`: the stdlib package whose kit runs the domain (e.g. "tabletop"): the package of the
-// file declaring the domain's likelihood (see kit_of()).
-ModelOutput emit_model(const ast::Program& program, const check::SymbolTable& symbols,
-                       const diag::SourceManager& sources, const std::string& kit);
-
-// The stdlib package that declares the domain's likelihood: "stdlib/indoor.ksm" gives
-// "indoor". Empty when the domain has no likelihood or it is not declared in stdlib/.
-std::string kit_of(const ast::Program& program, const check::SymbolTable& symbols,
-                   const diag::SourceManager& sources);
+// The binding of the domain in `ir` to its kit `ir.kit` (non-empty).
+ModelOutput emit_model(const lower::DomainIr& ir);
 
 }  // namespace ksmc::compiler::emit
