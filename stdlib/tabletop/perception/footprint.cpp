@@ -40,11 +40,11 @@ std::vector<Eigen::Vector2d> convex_hull(std::vector<Eigen::Vector2d> p) {
   std::vector<Eigen::Vector2d> h(2 * p.size());
   std::size_t k = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= 0.0) --k;
+    while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= 1e-12) --k;
     h[k++] = p[i];
   }
   for (std::size_t i = p.size() - 1, t = k + 1; i-- > 0;) {
-    while (k >= t && cross(h[k - 2], h[k - 1], p[i]) <= 0.0) --k;
+    while (k >= t && cross(h[k - 2], h[k - 1], p[i]) <= 1e-12) --k;
     h[k++] = p[i];
   }
   h.resize(k - 1);

@@ -19,7 +19,7 @@ struct Rect2 {
   [[nodiscard]] double area() const { return 4.0 * half.x() * half.y(); }
 };
 
-// Counter-clockwise hull without collinear points (Andrew's monotone chain). Fewer than
+// Counter-clockwise hull without (nearly, 1e-12 m^2) collinear points (Andrew's monotone chain). Fewer than
 // three distinct points give the distinct points.
 std::vector<Eigen::Vector2d> convex_hull(std::vector<Eigen::Vector2d> points);
 
