@@ -15,6 +15,7 @@
 
 #include "stdlib/tabletop/perception/scene_from_cloud.h"
 #include "stdlib/tabletop/perception/scene_json.h"
+#include "stdlib/tabletop/perception/cloud_truth.h"
 #include "stdlib/tabletop/perception/truth_eval.h"
 
 namespace pc = ksmc::stdlib::tabletop::perception;
@@ -28,13 +29,7 @@ int usage(const std::string& why) {
   return 2;
 }
 
-void print_truth(const pc::CloudScene& cs, const std::filesystem::path& truth_path, double gate) {
-  const auto truth = pc::read_obb_world(truth_path);
-  const auto est = pc::camera_frame_boxes(cs.scene);
-  const pc::TruthReport rep = pc::evaluate_registered(est, truth, gate);
-  fmt::print("registration: {} of {} centres matched, residual rms {:.1f} mm, max {:.1f} mm\n",
-             rep.registration.matched, truth.size(), 1000.0 * rep.registration.rms,
-             1000.0 * rep.registration.max_residual);
+void print_report(const pc::CloudScene& cs, const std::vector<pc::TruthBox>& truth, const pc::TruthReport& rep) {
   fmt::print("{:<18} {:>6} {:>9} {:>9} {:>26} {:>26}\n", "object", "est", "centre mm", "angle deg",
              "true size mm", "size error mm");
   for (std::size_t i = 0; i < truth.size(); ++i) {
@@ -51,6 +46,24 @@ void print_truth(const pc::CloudScene& cs, const std::filesystem::path& truth_pa
                1000.0 * e.size.x(), 1000.0 * e.size.y(), 1000.0 * e.size.z());
   }
   fmt::print("missed {}, spurious {}\n", rep.missed, rep.spurious);
+}
+
+void print_truth(const pc::CloudScene& cs, const std::filesystem::path& truth_path, double gate) {
+  const auto truth = pc::read_obb_world(truth_path);
+  const pc::CloudTruth ct = pc::evaluate_cloud_scene(cs, truth, gate);
+  const auto& reg = ct.by_centres.registration;
+  fmt::print("registration of the box centres: {} of {} matched, residual rms {:.1f} mm, max {:.1f} mm\n", reg.matched,
+             truth.size(), 1000.0 * reg.rms, 1000.0 * reg.max_residual);
+  print_report(cs, truth, ct.by_centres);
+  fmt::print("refined on the box surfaces (ICP, 2 cm gate): {} object points kept, point-to-surface rms {:.1f} mm; "
+             "boxes matched by their points: {}\n",
+             ct.surfaces.kept, 1000.0 * ct.surfaces.rms, ct.by_points.registration.matched);
+  print_report(cs, truth, ct.by_points);
+  const Eigen::Matrix4d m = ct.surfaces.points_to_boxes.matrix();
+  fmt::print("cloud -> truth frame [m]: [{:.6f} {:.6f} {:.6f} {:.5f}; {:.6f} {:.6f} {:.6f} {:.5f}; {:.6f} {:.6f} {:.6f} {:.5f}]\n",
+             m(0, 0), m(0, 1), m(0, 2), m(0, 3), m(1, 0), m(1, 1), m(1, 2), m(1, 3), m(2, 0), m(2, 1), m(2, 2), m(2, 3));
+  fmt::print("table top in the truth frame: z = {:.4f} m, normal tilt {:.2f} deg\n", ct.table_in_truth.translation().z(),
+             std::acos(std::min(1.0, ct.table_in_truth.linear().col(2).z())) * 180.0 / std::numbers::pi);
 }
 
 }  // namespace

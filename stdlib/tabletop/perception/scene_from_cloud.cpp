@@ -34,6 +34,16 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
   return out;
 }
 
+std::vector<Points> clusters_in_cloud(const CloudScene& cs) {
+  const Eigen::Isometry3d t = cs.table.table_in_cloud.isometry();
+  std::vector<Points> out;
+  for (const auto& cluster : cs.object_points) {
+    Points& o = out.emplace_back();
+    for (const auto& p : cluster) o.push_back(t * p);
+  }
+  return out;
+}
+
 CloudScene scene_from_cloud(const std::filesystem::path& path, const CloudOptions& options) {
   return scene_from_points(load_cloud(path, options.units), path.string(), options);
 }

@@ -33,6 +33,9 @@ struct CloudScene {
   std::size_t cloud_points = 0;
 };
 
+// The clusters mapped back into the cloud frame.
+std::vector<Points> clusters_in_cloud(const CloudScene& cs);
+
 // Throws CloudError naming `path` (unreadable, empty, NaN, no plane, no object above it).
 CloudScene scene_from_cloud(const std::filesystem::path& path, const CloudOptions& options = {});
 // Same on points already in memory (metres); `source` names them in errors.

@@ -97,8 +97,18 @@ TruthReport evaluate_registered(const std::vector<TruthBox>& estimates, const st
   return finish(estimates, truth, register_unmatched(centres(estimates), centres(truth), gate));
 }
 
+TruthReport evaluate_matched(const std::vector<TruthBox>& estimates, const std::vector<TruthBox>& truth,
+                             Registration registration) {
+  return finish(estimates, truth, std::move(registration));
+}
+
+TruthReport evaluate_with_transform(const std::vector<TruthBox>& estimates, const std::vector<TruthBox>& truth,
+                                    const Eigen::Isometry3d& transform, double gate) {
+  return finish(estimates, truth, match_nearest(centres(estimates), centres(truth), transform, gate));
+}
+
 TruthReport evaluate_same_frame(const std::vector<TruthBox>& estimates, const std::vector<TruthBox>& truth, double gate) {
-  return finish(estimates, truth, match_nearest(centres(estimates), centres(truth), Eigen::Isometry3d::Identity(), gate));
+  return evaluate_with_transform(estimates, truth, Eigen::Isometry3d::Identity(), gate);
 }
 
 }  // namespace ksmc::stdlib::tabletop::perception

@@ -41,6 +41,12 @@ struct TruthReport {
 
 // Frames differ: registers the estimate centres to the true centres (register_unmatched).
 TruthReport evaluate_registered(const std::vector<TruthBox>& estimates, const std::vector<TruthBox>& truth, double gate);
+// Known transform (estimates' frame -> truth frame): nearest-centre matching under it.
+TruthReport evaluate_with_transform(const std::vector<TruthBox>& estimates, const std::vector<TruthBox>& truth,
+                                    const Eigen::Isometry3d& transform, double gate);
+// Matching given (registration.match per estimate, registration.source_to_target).
+TruthReport evaluate_matched(const std::vector<TruthBox>& estimates, const std::vector<TruthBox>& truth,
+                             Registration registration);
 // Same frame: nearest-centre matching only.
 TruthReport evaluate_same_frame(const std::vector<TruthBox>& estimates, const std::vector<TruthBox>& truth, double gate);
 
