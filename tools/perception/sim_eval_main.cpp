@@ -1,4 +1,4 @@
-// ksmc-perception-sim [--scenes N] [--objects A..B] [--seed S] [--sigma M] [--missing R] [--stride K]
+// ksmc-perception-sim [--scenes N] [--objects A..B] [--seed S] [--sigma M] [--missing R] [--stride K] [--verbose]
 // Renders depth clouds of generated scenes (three families), runs the point-cloud front end
 // and prints, per family, how well the boxes are recovered (camera frame, nearest-centre
 // matching within 5 cm). Exit codes: 0 ok, 1 generation failure, 2 bad arguments.
@@ -35,9 +35,14 @@ int main(int argc, char** argv) {
   std::uint64_t seed = 1;
   double sigma = 0.001, missing = 0.0;
   int stride = 2;
+  bool verbose = false;
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
+      if (a == "--verbose") {
+        verbose = true;
+        continue;
+      }
       if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
       const std::string v = argv[++i];
       if (a == "--scenes") scenes = std::stoi(v);
@@ -85,9 +90,22 @@ int main(int argc, char** argv) {
           centre.push_back(1000.0 * o.error.centre);
           angle.push_back(o.error.angle * 180.0 / std::numbers::pi);
           size.push_back(1000.0 * o.error.max_size());
-          within += (o.error.centre <= 0.01 && o.error.angle <= 3.0 * std::numbers::pi / 180.0 &&
-                     o.error.max_size() <= 0.01);
+          const bool ok = o.error.centre <= 0.01 && o.error.angle <= 3.0 * std::numbers::pi / 180.0 &&
+                          o.error.max_size() <= 0.01;
+          within += ok;
+          if (verbose && !ok) {
+            const auto& t = f.truth[static_cast<std::size_t>(&o - rep.objects.data())];
+            const auto& e = cs.scene.objects[static_cast<std::size_t>(o.estimate)];
+            fmt::print("  {} scene {} {}: true {:.0f}x{:.0f}x{:.0f} mm, estimate {:.0f}x{:.0f}x{:.0f} mm ({} points), "
+                       "centre {:.1f} mm, angle {:.1f} deg, size error {:.1f} mm\n",
+                       fam.name, s, t.name, 1000 * t.size.x(), 1000 * t.size.y(), 1000 * t.size.z(), 1000 * e.size.x(),
+                       1000 * e.size.y(), 1000 * e.size.z(), cs.object_points[static_cast<std::size_t>(o.estimate)].size(),
+                       1000 * o.error.centre, o.error.angle * 180.0 / std::numbers::pi, 1000 * o.error.max_size());
+          }
         }
+        if (verbose)
+          for (std::size_t t = 0; t < rep.objects.size(); ++t)
+            if (rep.objects[t].estimate < 0) fmt::print("  {} scene {} {}: missed\n", fam.name, s, f.truth[t].name);
       } catch (const std::exception& e) {
         std::cerr << "error: " << e.what() << "\n";
         return 1;
