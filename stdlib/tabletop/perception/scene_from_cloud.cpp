@@ -22,14 +22,26 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
   s.camera = options.camera;
   s.table_in_camera = out.table.table_in_cloud;
   s.table.size = Eigen::Vector3d(out.table.extent.x(), out.table.extent.y(), options.table_thickness);
-  for (std::size_t i = 0; i < out.object_points.size(); ++i) {
-    const UprightBox box = fit_upright_box(out.object_points[i], options.box);
-    SceneObject o;
-    o.id = options.id_prefix + std::to_string(i);
-    o.model = "cluster";
-    o.size = box.size;
-    o.pose = box.pose;
-    s.objects.push_back(std::move(o));
+  std::vector<Points> clusters = std::move(out.object_points);
+  out.object_points.clear();
+  for (std::size_t c = 0; c < clusters.size(); ++c) {
+    const std::vector<UprightBox> boxes = options.split_stacks ? fit_stacked_boxes(clusters[c], options.box, options.stacks)
+                                                               : std::vector<UprightBox>{fit_upright_box(clusters[c], options.box)};
+    for (const UprightBox& box : boxes) {
+      SceneObject o;
+      o.id = options.id_prefix + std::to_string(s.objects.size());
+      o.model = "cluster";
+      o.size = box.size;
+      o.pose = box.pose;
+      // The box's own points: those of the cluster within 1 cm of it (stacked boxes split them).
+      const Obb obb = o.obb();
+      Points own;
+      for (const auto& p : clusters[c])
+        if (boxes.size() == 1 || obb.contains(p, 0.01)) own.push_back(p);
+      out.object_points.push_back(std::move(own));
+      out.cluster_of.push_back(static_cast<int>(c));
+      s.objects.push_back(std::move(o));
+    }
   }
   return out;
 }

@@ -11,6 +11,7 @@
 #include "stdlib/tabletop/perception/box_fit.h"
 #include "stdlib/tabletop/perception/cloud_io.h"
 #include "stdlib/tabletop/perception/clusters.h"
+#include "stdlib/tabletop/perception/stack_split.h"
 #include "stdlib/tabletop/perception/table_plane.h"
 #include "stdlib/tabletop/scene.h"
 
@@ -21,6 +22,8 @@ struct CloudOptions {
   TableOptions table;
   ClusterOptions clusters;
   BoxFitOptions box;
+  bool split_stacks = true;  // several boxes per cluster (stack_split.h)
+  StackOptions stacks;
   Camera camera{615.0, 615.0, 320.0, 240.0, 640, 480};  // written to scene.json (overlay)
   double table_thickness = 0.05;                        // m, the slab below z = 0
   std::string id_prefix = "obj_";
@@ -29,7 +32,8 @@ struct CloudOptions {
 struct CloudScene {
   Scene scene;                         // objects in the table frame, ids <prefix>0..
   TableFit table;
-  std::vector<Points> object_points;   // table frame, one cluster per scene object
+  std::vector<Points> object_points;   // table frame, the points of each scene object's box
+  std::vector<int> cluster_of;         // per scene object: its cluster (stacked boxes share one)
   std::size_t cloud_points = 0;
 };
 
