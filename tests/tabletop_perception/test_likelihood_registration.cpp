@@ -88,3 +88,36 @@ TEST_CASE("registration recovers a rigid motion and the matching from shuffled p
   CHECK(r.rms < 0.005);
   CHECK((r.source_to_target.linear() - t.linear()).norm() < 0.03);
 }
+
+TEST_CASE("free space: a box where the sensor sees through it is penalised", "[perception][likelihood]") {
+  const Obb real = upright(Eigen::Vector3d(0, 0, 0.05), Eigen::Vector3d(0.1, 0.1, 0.1));
+  FreeSpace fs;
+  fs.sensor = Eigen::Vector3d(0.1, -0.2, 0.9);
+  Points raw;
+  ksmc::tests::perception::add_table(raw, 0.3, 0.3, 0.01);
+  ksmc::tests::perception::add_box(raw, 0.0, 0.0, 0.0, Eigen::Vector3d(0.1, 0.1, 0.1), 0.005);
+  // Keep what the sensor sees: rays not blocked by the real box (1 mm before the point).
+  FreeSpace probe = fs;
+  probe.margin = 0.001;
+  for (const auto& p : raw) {
+    probe.points = {p};
+    if (see_through_count(real, probe) == 0) fs.points.push_back(p);
+  }
+  REQUIRE(fs.points.size() < raw.size());  // the box hides part of the table and its far faces
+  CHECK(see_through_count(real, fs) == 0);
+  const Obb floating = upright(Eigen::Vector3d(0.18, 0.15, 0.12), Eigen::Vector3d(0.06, 0.06, 0.06));
+  const std::size_t blocked = see_through_count(floating, fs);
+  CHECK(blocked > 20);
+
+  Points own;
+  for (const auto& p : fs.points)
+    if (real.contains(p, 0.002)) own.push_back(p);
+  CloudLikelihood cl({own, {}}, {real, floating}, {}, fs);
+  CHECK(cl.term(1) == Approx(-fs.cost * static_cast<double>(blocked)));
+  CHECK(cl.term(0) == Approx(cloud_log_likelihood(own, real)));
+  // Moving the false box out of the sensor's view removes the penalty, incrementally.
+  Obb away = floating;
+  away.center = Eigen::Vector3d(0.6, 0.6, 0.03);
+  CHECK(cl.update(1, away) == Approx(fs.cost * static_cast<double>(blocked)));
+  CHECK(cl.total() == Approx(cl.term(0)));
+}

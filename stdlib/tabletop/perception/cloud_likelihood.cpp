@@ -26,21 +26,50 @@ double cloud_log_likelihood(const Points& points, const Obb& box, const CloudLik
   return sum;
 }
 
+std::size_t see_through_count(const Obb& box, const FreeSpace& fs) {
+  const Eigen::Vector3d o = box.axes.transpose() * (fs.sensor - box.center);
+  std::size_t count = 0;
+  for (const auto& p : fs.points) {
+    const Eigen::Vector3d seg = p - fs.sensor;
+    const double len = seg.norm();
+    if (len <= fs.margin) continue;
+    const double reach = 1.0 - fs.margin / len;  // segment parameter where the check stops
+    const Eigen::Vector3d d = box.axes.transpose() * seg;
+    double enter = 0.0, leave = reach;
+    bool hit = true;
+    for (int k = 0; k < 3 && hit; ++k) {
+      if (std::abs(d[k]) < 1e-15) {
+        hit = std::abs(o[k]) <= box.half[k];
+        continue;
+      }
+      double s0 = (-box.half[k] - o[k]) / d[k], s1 = (box.half[k] - o[k]) / d[k];
+      if (s0 > s1) std::swap(s0, s1);
+      enter = std::max(enter, s0);
+      leave = std::min(leave, s1);
+      hit = enter <= leave;
+    }
+    count += hit ? 1 : 0;
+  }
+  return count;
+}
+
 CloudLikelihood::CloudLikelihood(std::vector<Points> object_points, const std::vector<Obb>& boxes,
-                                 CloudLikelihoodParams params)
-    : points_(std::move(object_points)), params_(params) {
+                                 CloudLikelihoodParams params, std::optional<FreeSpace> free_space)
+    : points_(std::move(object_points)), params_(params), free_space_(std::move(free_space)) {
   if (points_.size() != boxes.size())
     throw std::invalid_argument("CloudLikelihood: one point set per box is needed");
   if (!(params_.sigma > 0.0) || !(params_.outlier_distance > 0.0))
     throw std::invalid_argument("CloudLikelihood: sigma and outlier_distance must be > 0");
   for (std::size_t i = 0; i < boxes.size(); ++i) {
-    terms_.push_back(cloud_log_likelihood(points_[i], boxes[i], params_));
+    terms_.push_back(evaluate(i, boxes[i]));
     total_ += terms_.back();
   }
 }
 
 double CloudLikelihood::evaluate(std::size_t object, const Obb& box) const {
-  return cloud_log_likelihood(points_.at(object), box, params_);
+  double term = cloud_log_likelihood(points_.at(object), box, params_);
+  if (free_space_) term -= free_space_->cost * static_cast<double>(see_through_count(box, *free_space_));
+  return term;
 }
 
 double CloudLikelihood::update(std::size_t object, const Obb& box) {

@@ -9,8 +9,9 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
   CloudScene out;
   out.cloud_points = cloud.size();
   out.table = fit_table(cloud, source, options.table);
-  const Points local = to_table_frame(cloud, out.table.table_in_cloud);
-  out.object_points = cluster_objects(local, out.table.extent, options.clusters);
+  out.cloud_in_table = to_table_frame(cloud, out.table.table_in_cloud);
+  out.sensor_in_table = out.table.table_in_cloud.inverse().t;
+  out.object_points = cluster_objects(out.cloud_in_table, out.table.extent, options.clusters);
   if (out.object_points.empty())
     throw CloudError(fmt::format("{}: no object above the table ({} table points, none of the other {} points "
                                  "forms a cluster of {} points between {} and {} m above it)",

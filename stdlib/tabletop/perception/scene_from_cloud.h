@@ -35,6 +35,8 @@ struct CloudScene {
   std::vector<Points> object_points;   // table frame, the points of each scene object's box
   std::vector<int> cluster_of;         // per scene object: its cluster (stacked boxes share one)
   std::size_t cloud_points = 0;
+  Points cloud_in_table;               // the whole cloud in the table frame
+  Eigen::Vector3d sensor_in_table = Eigen::Vector3d::Zero();  // the cloud origin
 };
 
 // The clusters mapped back into the cloud frame.
