@@ -4,8 +4,8 @@
 // logic (evidence hashing, cache lookups, grounding + inference of new evidence).
 // Each run starts from a fresh model (cold MLN cache). Median of 7 runs. "kept" is the share
 // of iterations in which the current pose had the best weight (the move keeps the state);
-// "us/MLN run" is one uncached MLN evaluation of the scene's input evidence (grounding,
-// exact marginals and log Z, exact MAP), median of 7 fresh evaluators: the cost an
+// "us/MLN run" is one uncached evaluation of the scene's input (full extraction,
+// grounding, exact marginals and log Z, exact MAP), median of 7 fresh models: the cost an
 // iteration pays on top when its evidence is new.
 //
 //   bench_tabletop_iteration [iterations per run, default 2000]
@@ -27,8 +27,7 @@
 #include "stdlib/tabletop/scene_io.h"
 #include "stdlib/tabletop/sim/generator.h"
 #include "stdlib/tabletop/sim/scene_writer.h"
-#include "tests/tabletop_kit/binding.h"
-#include "tests/tabletop_kit/config_fixture.h"
+#include "tests/tabletop_kit/binding_fixture.h"
 
 namespace kit = ksmc::stdlib::tabletop::kit;
 namespace tt = ksmc::stdlib::tabletop;
@@ -45,26 +44,24 @@ struct RunStats {
   double kept = 0.0;
 };
 
-double cold_mln_us(const std::shared_ptr<const tt::Scene>& scene, const std::shared_ptr<const kit::KitConfig>& cfg) {
-  const kit::TabletopModel model(scene, cfg, ksmc::tests::tabletop_kit::tabletop_binding());
+double cold_mln_us(const std::shared_ptr<const tt::Scene>& scene) {
   std::vector<double> us;
   for (int r = 0; r < 7; ++r) {
-    kit::MlnEvaluator fresh(ksmc::tests::tabletop_kit::tabletop_binding(), model.evidence().ids);
     const auto t0 = std::chrono::steady_clock::now();
-    const auto outcome = fresh.evaluate(model.evidence());
+    const kit::TabletopModel fresh(scene, ksmc::tests::tabletop_kit::ksm_binding());  // extraction + one run
     us.push_back(1e6 * std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-    if (!std::isfinite(outcome->log_map)) std::cerr << "bench_tabletop_iteration: impossible input evidence\n";
+    if (!std::isfinite(fresh.log_prior())) std::cerr << "bench_tabletop_iteration: impossible input evidence\n";
   }
   std::sort(us.begin(), us.end());
   return us[us.size() / 2];
 }
 
-RunStats run_once(const std::shared_ptr<const tt::Scene>& scene, const std::shared_ptr<const kit::KitConfig>& cfg,
-                  long iterations, std::uint64_t seed) {
-  kit::TabletopModel model(scene, cfg, ksmc::tests::tabletop_kit::tabletop_binding());
-  const kit::RefineKernel kernel(cfg->kernels.at(0));
+RunStats run_once(const std::shared_ptr<const tt::Scene>& scene, long iterations, std::uint64_t seed) {
+  const auto& binding = ksmc::tests::tabletop_kit::ksm_binding();
+  kit::TabletopModel model(scene, binding);
+  const kit::RefineKernel kernel(binding.kernels.at(0), true);
   rm::Rng rng(seed);
-  const auto before = model.mln().stats();
+  const auto before = model.semantics().core().stats();
   long accepted = 0, kept = 0;
   const auto t0 = std::chrono::steady_clock::now();
   double lp = model.log_posterior();
@@ -85,11 +82,11 @@ RunStats run_once(const std::shared_ptr<const tt::Scene>& scene, const std::shar
     }
   }
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const auto after = model.mln().stats();
+  const auto after = model.semantics().core().stats();
   RunStats s;
   s.us_per_iter = 1e6 * secs / static_cast<double>(iterations);
-  s.mln_share = (after.seconds - before.seconds) / secs;
-  s.mln_runs_per_1k = 1000.0 * static_cast<double>(after.runs - before.runs) / static_cast<double>(iterations);
+  s.mln_share = (after.inference_seconds - before.inference_seconds) / secs;
+  s.mln_runs_per_1k = 1000.0 * static_cast<double>(after.inferences - before.inferences) / static_cast<double>(iterations);
   s.acceptance = static_cast<double>(accepted) / static_cast<double>(iterations);
   s.kept = static_cast<double>(kept) / static_cast<double>(iterations);
   return s;
@@ -112,8 +109,6 @@ int main(int argc, char** argv) {
     }
   }
   constexpr int kRuns = 7;
-  const auto cfg = std::make_shared<const kit::KitConfig>(
-      kit::read_kit_config(ksmc::tests::tabletop_kit::tabletop_config()));
   std::cout << fmt::format("table-top kit, domains/tabletop.ksm parameters, {} iterations per run, median of {} runs\n",
                            iterations, kRuns);
   std::cout << "| boxes | objects | us/iteration | MLN share | MLN runs /1k it | acceptance | kept | us/MLN run |\n"
@@ -126,7 +121,7 @@ int main(int argc, char** argv) {
     const auto scene = std::make_shared<const tt::Scene>(std::move(load.scene));
     std::vector<double> us, share, runs, acc, kept;
     for (int r = 0; r < kRuns; ++r) {
-      const RunStats s = run_once(scene, cfg, iterations, 1 + static_cast<std::uint64_t>(r));
+      const RunStats s = run_once(scene, iterations, 1 + static_cast<std::uint64_t>(r));
       us.push_back(s.us_per_iter);
       share.push_back(s.mln_share);
       runs.push_back(s.mln_runs_per_1k);
@@ -135,7 +130,7 @@ int main(int argc, char** argv) {
     }
     std::cout << fmt::format("| {:>5} | {:>7} | {:>12.1f} | {:>8.1f}% | {:>15.1f} | {:>10.3f} | {:>4.2f} | {:>10.0f} |\n",
                              n, scene->objects.size(), median(us), 100.0 * median(share), median(runs), median(acc),
-                             median(kept), cold_mln_us(scene, cfg));
+                             median(kept), cold_mln_us(scene));
   }
   return 0;
 }

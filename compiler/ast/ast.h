@@ -45,11 +45,12 @@ struct Number {
   Loc unit_loc;
 };
 
-// `name: type`, `name: real[][]`, `name: set<query>`.
+// `name: type`, `name: real[][]`, `name: real[3][3]`, `name: set<query>`, `name: query`.
 struct TypeRef {
   std::string name;
-  int list_depth = 0;  // number of trailing []
-  bool is_set = false; // set<name>
+  int list_depth = 0;     // number of trailing []
+  std::vector<int> dims;  // per [ ]: its fixed size, 0 for variable (`[]`); size == list_depth
+  bool is_set = false;    // set<name>
   Loc loc;
 };
 
@@ -130,29 +131,69 @@ struct QuantityDecl { Ident name; std::vector<UnitDef> units; };
 struct ValueDecl { std::vector<Ident> names; };
 
 // `extern extractor obb.contact(pose_a: se3, ..., eps: length = 4 mm) -> bool;`
+// One bound of `in [lo, hi]`: a number (with its unit) or `inf` / `-inf`.
+struct Bound {
+  bool inf = false;
+  bool negative = false;  // -inf
+  Number number;          // when !inf
+  Loc loc;
+};
+// `in (0, inf)`, `in [1, 100]`, `in [0, 90 deg]`.
+struct Range {
+  bool lo_open = false;  // `(`
+  bool hi_open = false;  // `)`
+  Bound lo, hi;
+  Loc loc;
+};
 struct Param {
   Ident name;
   TypeRef type;
+  std::optional<Range> range;
+  std::optional<Number> rowsum;  // `rowsum 1`
+  Loc rowsum_loc;
   std::optional<Expr> default_value;
 };
+// `makes birth / death` (forward / reverse), `makes jitter` (self-reverse),
+// `serves merge, interchange`.
+struct MoveSpec {
+  enum class Kind { None, Makes, Serves };
+  Kind kind = Kind::None;
+  std::vector<Ident> moves;  // Makes: 1 or 2; Serves: >= 1
+  Loc loc;
+};
 struct ExternDecl {
-  Ident kind;  // extractor | prior | likelihood | proposal | function
+  Ident kind;  // extractor | prior | likelihood | proposal | function | output
   std::string name;
   Loc name_loc;
   bool has_params = false;
   std::vector<Param> params;
   std::optional<TypeRef> result;
+  std::optional<TypeRef> reads;  // `reads rect[]`
+  MoveSpec moves;
 };
 
+// `extern model(rect[] sampled, segment[] sampled);` — the model a kit runs: per variable
+// its value type, indexing (`[]` variable-size, `[entity]` one per run-time constant, none
+// for a scalar) and sampled / fixed.
+struct ModelSlot {
+  Ident type;
+  bool collection = false;
+  std::optional<Ident> index;
+  bool sampled = false;
+  Loc loc;
+};
+struct ModelContractDecl { std::vector<ModelSlot> slots; };
+
 struct Rule {
+  std::optional<Ident> label;    // `@name`
   bool hard = false;
   std::optional<Number> prob;    // `prob p:` (weight log(p/(1-p)))
   std::optional<Number> weight;  // `w x:`
-  Loc head_loc;                  // first token of the rule
+  Loc head_loc;                  // first token of the rule (after `@name`)
   bool exactly_one = false;      // `exactly one of a, b, c`
   std::vector<Atom> alternatives;
   Formula formula;               // when !exactly_one
-  std::string source_text;       // the rule as written (for comments in generated code)
+  std::string source_text;       // the rule as written, without `@name` (comments in generated code)
 };
 
 // Inside `model NAME { ... }`: `pose[object] : se3 sampled;`, `unit[] : rect sampled;`
@@ -191,6 +232,9 @@ struct PriorDecl {
 
 struct LikelihoodDecl { Call call; };
 
+// `output scene.decisions(false_est = falseEst, hidden = hidden);`
+struct OutputDecl { Call call; };
+
 // `kernel pair ADD / REMOVE = detect.wbu(...), detect.fsu(after = 4000);`
 // `kernel refine(o: object) reverse refine = pose.perturb(pose[o], ...);`
 struct KernelParam { Ident name; Ident type; };
@@ -217,7 +261,7 @@ struct ScheduleDecl { std::vector<ScheduleRow> rows; };
 
 using ItemNode = std::variant<DomainDecl, IncludeDecl, TypeDecl, PredDecl, QuantityDecl,
                               ValueDecl, ExternDecl, Rule, ModelDecl, ExtractDecl, PriorDecl,
-                              LikelihoodDecl, KernelDecl, ScheduleDecl>;
+                              LikelihoodDecl, KernelDecl, ScheduleDecl, ModelContractDecl, OutputDecl>;
 
 struct Item {
   Loc loc;                     // first token

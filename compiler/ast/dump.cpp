@@ -28,7 +28,10 @@ std::string num(const Number& n) { return n.unit.empty() ? n.text : n.text + " "
 std::string type_ref(const TypeRef& t) {
   if (t.is_set) return "set<" + t.name + ">";
   std::string s = t.name;
-  for (int i = 0; i < t.list_depth; ++i) s += "[]";
+  for (int i = 0; i < t.list_depth; ++i) {
+    const int n = i < static_cast<int>(t.dims.size()) ? t.dims[static_cast<std::size_t>(i)] : 0;
+    s += n > 0 ? "[" + std::to_string(n) + "]" : std::string("[]");
+  }
   return s;
 }
 
@@ -124,16 +127,38 @@ struct Dumper {
       out << " (params";
       for (const Param& p : x.params) {
         out << " (" << p.name.name << " " << type_ref(p.type);
+        if (p.range) out << " (in " << bound(p.range->lo, p.range->lo_open ? "(" : "[") << ", " << bound(p.range->hi, "") << (p.range->hi_open ? ")" : "]") << ")";
+        if (p.rowsum) out << " (rowsum " << num(*p.rowsum) << ")";
         if (p.default_value) out << " " << expr(*p.default_value);
         out << ")";
       }
       out << ")";
     }
     if (x.result) out << " (result " << type_ref(*x.result) << ")";
+    if (x.reads) out << " (reads " << type_ref(*x.reads) << ")";
+    if (x.moves.kind != MoveSpec::Kind::None) {
+      out << (x.moves.kind == MoveSpec::Kind::Makes ? " (makes" : " (serves");
+      for (const Ident& m : x.moves.moves) out << " " << m.name;
+      out << ")";
+    }
     out << ")";
   }
+  std::string bound(const Bound& b, const char* open) {
+    return std::string(open) + (b.inf ? (b.negative ? "-inf" : "inf") : num(b.number));
+  }
+  void operator()(const ModelContractDecl& d) {
+    out << "(extern model";
+    for (const ModelSlot& s : d.slots) {
+      out << " (" << s.type.name;
+      if (s.collection) out << (s.index ? " [" + s.index->name + "]" : std::string(" []"));
+      out << (s.sampled ? " sampled" : " fixed") << ")";
+    }
+    out << ")";
+  }
+  void operator()(const OutputDecl& o) { out << "(output " << call(o.call) << ")"; }
   void operator()(const Rule& r) {
     out << "(rule";
+    if (r.label) out << " @" << r.label->name;
     if (r.hard) out << " hard";
     if (r.prob) out << " (prob " << num(*r.prob) << ")";
     if (r.weight) out << " (w " << num(*r.weight) << ")";

@@ -2,6 +2,7 @@
 
 #include <antlr4-runtime.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <string>
@@ -81,10 +82,60 @@ class Builder {
       t.is_set = true;
       t.name = s->elem->getText();
     } else if (auto* n = dynamic_cast<P::NamedTypeContext*>(c)) {
-      t.name = n->IDENT()->getText();
-      t.list_depth = static_cast<int>((n->children.size() - 1) / 2);
+      t.name = n->name->getText();
+      for (P::DimContext* d : n->dim()) {
+        int size = 0;
+        if (d->NUMBER() != nullptr) {
+          const std::string text = d->NUMBER()->getText();
+          const double v = std::strtod(text.c_str(), nullptr);
+          if (text.find_first_of(".eE") != std::string::npos || v < 1 || v > 1e6) {
+            diags_.error(loc(d->NUMBER()), "list size '" + text + "' must be a whole number from 1 to 1000000");
+          } else {
+            size = static_cast<int>(v);
+          }
+        }
+        t.dims.push_back(size);
+      }
+      t.list_depth = static_cast<int>(t.dims.size());
     }
     return t;
+  }
+
+  ast::Bound bound(P::BoundContext* c) {
+    ast::Bound b;
+    b.loc = loc(c);
+    if (c->number() != nullptr) {
+      b.number = number(c->number());
+    } else {
+      b.inf = true;
+      b.negative = c->neg != nullptr;
+    }
+    return b;
+  }
+
+  ast::Param param(P::ParamContext* pc) {
+    ast::Param p;
+    p.name = ident(pc->IDENT());
+    p.type = type_ref(pc->typeRef());
+    if (auto* r = pc->paramRange()) {
+      ast::Range range;
+      range.loc = loc(r);
+      range.lo_open = r->lo->getText() == "(";
+      range.hi_open = r->hi->getText() == ")";
+      range.lo = bound(r->lower);
+      range.hi = bound(r->upper);
+      p.range = std::move(range);
+    }
+    if (auto* rs = pc->rowSum()) {
+      if (rs->kw->getText() != "rowsum") {
+        diags_.error(loc(rs->kw), "unknown parameter constraint '" + rs->kw->getText() + "'; write 'rowsum X'");
+      } else {
+        p.rowsum = number(rs->number());
+        p.rowsum_loc = loc(rs->kw);
+      }
+    }
+    if (pc->expr() != nullptr) p.default_value = expr(pc->expr());
+    return p;
   }
 
   std::string qual_name(P::QualNameContext* c) {
@@ -301,15 +352,35 @@ class Builder {
           x.has_params = true;
         }
       }
-      for (auto* pc : c->param()) {
-        ast::Param p;
-        p.name = ident(pc->IDENT());
-        p.type = type_ref(pc->typeRef());
-        if (pc->expr() != nullptr) p.default_value = expr(pc->expr());
-        x.params.push_back(std::move(p));
+      for (auto* pc : c->param()) x.params.push_back(param(pc));
+      for (auto* tc : c->typeRef()) {
+        if (tc == c->reads) x.reads = type_ref(tc);
+        else x.result = type_ref(tc);
       }
-      if (c->typeRef() != nullptr) x.result = type_ref(c->typeRef());
+      if (auto* m = dynamic_cast<P::MakesSpecContext*>(c->moveSpec())) {
+        x.moves.kind = ast::MoveSpec::Kind::Makes;
+        x.moves.loc = loc(m);
+        for (auto* id : m->IDENT()) x.moves.moves.push_back(ident(id));
+      } else if (auto* sv = dynamic_cast<P::ServesSpecContext*>(c->moveSpec())) {
+        x.moves.kind = ast::MoveSpec::Kind::Serves;
+        x.moves.loc = loc(sv);
+        for (auto* id : sv->IDENT()) x.moves.moves.push_back(ident(id));
+      }
       item.node = std::move(x);
+    } else if (auto* c = dynamic_cast<P::ExternModelItemContext*>(ic)) {
+      ast::ModelContractDecl d;
+      for (auto* sc : c->modelSlot()) {
+        ast::ModelSlot slot;
+        slot.type = ident(sc->IDENT().front());
+        slot.loc = loc(sc);
+        slot.collection = sc->children.size() > 2;
+        if (sc->index != nullptr) slot.index = ident(sc->index);
+        slot.sampled = sc->vmode->getText() == "sampled";
+        d.slots.push_back(std::move(slot));
+      }
+      item.node = std::move(d);
+    } else if (auto* c = dynamic_cast<P::OutputItemContext*>(ic)) {
+      item.node = ast::OutputDecl{call(c->call())};
     } else if (auto* c = dynamic_cast<P::RuleItemContext*>(ic)) {
       return build_rule(c, item);
     } else if (auto* c = dynamic_cast<P::ModelItemContext*>(ic)) {
@@ -411,7 +482,8 @@ class Builder {
   bool build_rule(P::RuleItemContext* c, ast::Item& item) {
     ast::Rule r;
     P::RuleHeadContext* h = c->ruleHead();
-    r.head_loc = loc(c);
+    if (c->ruleName() != nullptr) r.label = ident(c->ruleName()->IDENT());
+    r.head_loc = c->ruleName() != nullptr ? loc(c->ruleHead()->getStart()) : loc(c);
     r.hard = h->hard != nullptr;
     if (h->weightProb != nullptr) r.prob = number(h->number());
     if (h->weightRaw != nullptr) {
@@ -423,6 +495,13 @@ class Builder {
       r.weight = number(h->number());
     }
     r.source_text = source_text(c);
+    if (c->ruleName() != nullptr) {  // without `@name`
+      const std::string label = source_text(c->ruleName());
+      std::size_t at = r.source_text.find(label);
+      if (at == 0) r.source_text = r.source_text.substr(label.size());
+      while (!r.source_text.empty() && std::isspace(static_cast<unsigned char>(r.source_text.front())))
+        r.source_text.erase(r.source_text.begin());
+    }
     if (auto* ex = dynamic_cast<P::ExactlyOneBodyContext*>(c->ruleBody())) {
       r.exactly_one = true;
       for (auto* a : ex->atom()) r.alternatives.push_back(atom(a));

@@ -36,6 +36,7 @@ class Checker {
     for (const auto& [name, vt] : infer_variable_types(sc, s_)) vars_[name] = vt.type;
     const std::string kind = sc.kind == Scope::Kind::Extract ? "extractor"
                              : sc.kind == Scope::Kind::Kernel ? "proposal"
+                             : sc.kind == Scope::Kind::Output ? "output"
                              : std::holds_alternative<ast::LikelihoodDecl>(sc.item->node) ? "likelihood"
                                                                                            : "prior";
     for (const ast::Call* c : sc.calls) {
@@ -64,7 +65,8 @@ class Checker {
     if (t.base == "int" || t.base == "real") return "a number without unit";
     if (t.base == "string") return "a string";
     if (t.base == "bool") return "a boolean";
-    if (t.base == "query" || t.base == "evidence") return "a predicate name";
+    if (t.base == "query") return "a query predicate name";
+    if (t.base == "evidence") return "an evidence predicate name";
     const TypeSym* ts = s_.type(t.base);
     if (ts != nullptr && ts->kind == TypeSym::Kind::Quantity) return quantity_phrase(t.base, t.unit);
     if (ts != nullptr && ts->kind == TypeSym::Kind::Domain) return "a variable of type '" + t.base + "'";
@@ -72,7 +74,13 @@ class Checker {
   }
 
   std::string expected(const ast::TypeRef& p) const {
-    if (p.is_set) return p.name == "pred" ? "a set of predicate names" : "a set of " + p.name + " predicate names";
+    if (p.is_set) {
+      if (p.name == "pred") return "a set of predicate names";
+      if (p.name == "label") return "a set of label predicate names";
+      return "a set of " + p.name + " predicate names";
+    }
+    if (p.name == "query" || p.name == "evidence") return "a " + p.name + " predicate name";
+    if (p.name == "pred") return "a predicate name";
     if (p.list_depth > 0) {
       std::string s = p.name;
       for (int i = 0; i < p.list_depth; ++i) s += "[]";
@@ -97,7 +105,7 @@ class Checker {
     if (got.base.empty() || want == got.base) return true;
     if (want == "real" && got.base == "int") return true;
     if (want == "entity") return s_.is_domain_type(got.base);
-    if (want == "pred") return got.base == "query" || got.base == "evidence";
+    if (want == "pred" || want == "label") return got.base == "query" || got.base == "evidence";
     return false;
   }
 

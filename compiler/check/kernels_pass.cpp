@@ -10,6 +10,12 @@ void KernelsPass::run(Context& ctx) {
                                       "' if it is its own reverse) or declare it as 'kernel pair " + name + " / NAME'");
       continue;
     }
+    if (!k.decl->pair && k.reverse->name != name) {  // a kernel and its reverse are declared together
+      ctx.diags.error(k.reverse->loc, "kernel '" + name + "' names another kernel '" + k.reverse->name +
+                                          "' as its reverse; declare the two together: 'kernel pair " + name + " / " +
+                                          k.reverse->name + " = ...;'");
+      continue;
+    }
     auto r = kernels.find(k.reverse->name);
     if (r == kernels.end()) {
       ctx.diags.error(k.reverse->loc, "reverse kernel '" + k.reverse->name + "' of '" + name + "' is not declared");

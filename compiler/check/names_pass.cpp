@@ -17,7 +17,8 @@ class Names {
 
   void type(const std::string& name, const ast::Loc& loc, bool domain_only) {
     const TypeSym* t = s_.type(name);
-    if (t == nullptr && name == "pred") return;  // set<pred> is built in
+    // Built in: set<pred>, set<label>, and single-predicate parameters query / evidence / pred.
+    if (t == nullptr && (name == "pred" || name == "label" || name == "query" || name == "evidence")) return;
     if (t == nullptr) {
       std::string msg = "undeclared type '" + name + "'";
       const std::string hint = suggest(name, keys_of(s_.types));
@@ -30,7 +31,7 @@ class Names {
 
   void type_ref(const ast::TypeRef& t) {
     if (t.is_set) {
-      if (t.name != "query" && t.name != "evidence" && t.name != "pred") type(t.name, t.loc, true);
+      if (t.name != "query" && t.name != "evidence" && t.name != "pred" && t.name != "label") type(t.name, t.loc, true);
       return;
     }
     type(t.name, t.loc, false);
@@ -60,6 +61,12 @@ class Names {
     } else if (const auto* x = std::get_if<ast::ExternDecl>(&item.node)) {
       for (const ast::Param& p : x->params) type_ref(p.type);
       if (x->result) type_ref(*x->result);
+      if (x->reads) type_ref(*x->reads);
+    } else if (const auto* mc = std::get_if<ast::ModelContractDecl>(&item.node)) {
+      for (const ast::ModelSlot& s : mc->slots) {
+        type(s.type.name, s.type.loc, false);
+        if (s.index && s.index->name != "entity") type(s.index->name, s.index->loc, true);
+      }
     } else if (const auto* m = std::get_if<ast::ModelDecl>(&item.node)) {
       for (const ast::ModelVar& v : m->vars) {
         if (v.index) type(v.index->name, v.index->loc, true);

@@ -26,6 +26,8 @@ class Pass {
   virtual ~Pass() = default;
   [[nodiscard]] virtual std::string_view name() const = 0;
   virtual void run(Context& ctx) = 0;
+  // Runs only when the passes before it found no error (its findings would be cascades).
+  [[nodiscard]] virtual bool needs_clean_input() const { return false; }
 };
 
 // Formats a number for messages without trailing zeros ("0.95", "1000", "1e-12").

@@ -42,6 +42,47 @@ class WeightsPass final : public Pass {
 };
 
 // `extract` targets: an evidence predicate over distinct variables, extracted once.
+// Names every rule of the main file (compiler/check/rule_names.h) into SymbolTable::rule_names;
+// a duplicate name is an error at the second rule.
+class RuleNamesPass final : public Pass {
+ public:
+  [[nodiscard]] std::string_view name() const override { return "rule-names"; }
+  void run(Context& ctx) override;
+};
+
+// Kit contract: parameter ranges (after unit conversion), list shapes, row sums, label sets;
+// signatures' own bounds and defaults.
+class ContractParamsPass final : public Pass {
+ public:
+  [[nodiscard]] std::string_view name() const override { return "contract-params"; }
+  [[nodiscard]] bool needs_clean_input() const override { return true; }
+  void run(Context& ctx) override;
+};
+
+// Kit contract: the model block against `extern model(...)`, one run-time type, `reads`.
+class ModelContractPass final : public Pass {
+ public:
+  [[nodiscard]] std::string_view name() const override { return "model-contract"; }
+  [[nodiscard]] bool needs_clean_input() const override { return true; }
+  void run(Context& ctx) override;
+};
+
+// Kit contract: the move each kernel's sources make (`makes` / `serves`) and the kernel shape.
+class KernelMovesPass final : public Pass {
+ public:
+  [[nodiscard]] std::string_view name() const override { return "kernel-moves"; }
+  [[nodiscard]] bool needs_clean_input() const override { return true; }
+  void run(Context& ctx) override;
+};
+
+// One likelihood; `prior for` with per-binding terms, plain `prior` with global ones.
+class DomainItemsPass final : public Pass {
+ public:
+  [[nodiscard]] std::string_view name() const override { return "domain-items"; }
+  [[nodiscard]] bool needs_clean_input() const override { return true; }
+  void run(Context& ctx) override;
+};
+
 class ExtractPass final : public Pass {
  public:
   [[nodiscard]] std::string_view name() const override { return "extract"; }
@@ -74,6 +115,7 @@ class SchedulePass final : public Pass {
 class UsagePass final : public Pass {
  public:
   [[nodiscard]] std::string_view name() const override { return "usage"; }
+  [[nodiscard]] bool needs_clean_input() const override { return true; }
   void run(Context& ctx) override;
 };
 

@@ -46,6 +46,9 @@ std::vector<Scope> collect_scopes(const ast::Module& m) {
     } else if (const auto* l = std::get_if<ast::LikelihoodDecl>(&item.node)) {
       s.kind = Scope::Kind::Prior;
       s.calls.push_back(&l->call);
+    } else if (const auto* o = std::get_if<ast::OutputDecl>(&item.node)) {
+      s.kind = Scope::Kind::Output;
+      s.calls.push_back(&o->call);
     } else if (const auto* k = std::get_if<ast::KernelDecl>(&item.node)) {
       s.kind = Scope::Kind::Kernel;
       for (const ast::KernelParam& kp : k->params) s.declared[kp.name.name] = kp.type.name;

@@ -15,7 +15,7 @@
 namespace ksmc::compiler::check {
 
 struct Scope {
-  enum class Kind { Rule, Extract, Prior, Kernel };
+  enum class Kind { Rule, Extract, Prior, Kernel, Output };
   Kind kind = Kind::Rule;
   const ast::Item* item = nullptr;
   std::vector<const ast::Atom*> atoms;    // every atom, in source order

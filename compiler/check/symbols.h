@@ -59,7 +59,7 @@ struct KernelSym {
 
 // Kinds of `extern` declarations and the place where each may be called.
 inline const std::vector<std::string>& extern_kinds() {
-  static const std::vector<std::string> kinds{"extractor", "prior", "likelihood", "proposal", "function"};
+  static const std::vector<std::string> kinds{"extractor", "prior", "likelihood", "proposal", "function", "output"};
   return kinds;
 }
 
@@ -72,7 +72,11 @@ struct SymbolTable {
   std::map<std::string, ModelVarSym> model_vars;
   std::map<std::string, KernelSym> kernels;  // both directions of a pair
   std::vector<const ast::ScheduleDecl*> schedules;
+  // `extern model(...)` declarations with the module declaring each.
+  std::vector<std::pair<const ast::ModelContractDecl*, int>> model_contracts;
   std::string domain;
+  // Name of every rule of the main module (RuleNamesPass).
+  std::map<const ast::Rule*, std::string> rule_names;
 
   [[nodiscard]] const PredicateSym* predicate(const std::string& n) const {
     auto it = predicates.find(n);

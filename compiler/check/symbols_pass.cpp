@@ -90,7 +90,7 @@ class Declarer {
     const auto& kinds = extern_kinds();
     if (std::find(kinds.begin(), kinds.end(), x.kind.name) == kinds.end()) {
       ctx_.diags.error(x.kind.loc, "unknown extern kind '" + x.kind.name +
-                                       "' (expected extractor, prior, likelihood, proposal or function)");
+                                       "' (expected extractor, prior, likelihood, proposal, function or output)");
     }
     for (std::size_t i = 0; i < x.params.size(); ++i) {
       for (std::size_t j = 0; j < i; ++j) {
@@ -111,6 +111,8 @@ class Declarer {
   void declare(const ast::ExtractDecl&, const ast::Item&) {}
   void declare(const ast::PriorDecl&, const ast::Item&) {}
   void declare(const ast::LikelihoodDecl&, const ast::Item&) {}
+  void declare(const ast::OutputDecl&, const ast::Item&) {}
+  void declare(const ast::ModelContractDecl& d, const ast::Item&) { s_.model_contracts.emplace_back(&d, module_); }
   void declare(const ast::KernelDecl& k, const ast::Item&) {
     if (fresh(s_.kernels, "kernel", k.name)) s_.kernels[k.name.name] = KernelSym{&k, k.name, k.reverse, module_};
     if (k.pair && k.reverse && k.reverse->name != k.name.name) {

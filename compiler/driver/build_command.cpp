@@ -18,8 +18,6 @@
 #include "compiler/driver/pipeline.h"
 #include "compiler/driver/subprocess.h"
 #include "compiler/emit/emit_factors.h"
-#include "compiler/emit/emit_model.h"
-#include "compiler/lower/lower_mln.h"
 #include "runtime/io/atomic_file.h"
 
 #ifndef KSMC_VERSION
@@ -50,23 +48,14 @@ struct EmittedDomain {
 bool emit_domain(const std::string& path, const build::LoadOptions& load, std::ostream& err, EmittedDomain& out) {
   diag::SourceManager sources;
   diag::DiagEngine diags(sources);
-  FrontendResult r = run_frontend(path, load, sources, diags);
-  lower::MlnIr ir;
-  const bool ok = r.ok && lower::lower_mln(r.program, r.symbols, sources, diags, ir) && !diags.has_errors();
+  PipelineResult r = run_pipeline(path, load, sources, diags, Goal::Emit);
   diags.flush(err);
-  if (!ok) return false;
-  const emit::FactorsOutput factors = emit::emit_factors(ir);
+  if (!r.ok) return false;
   const std::string suffix = "_factors.h";
-  out.domain = factors.header.name.substr(0, factors.header.name.size() - suffix.size());
-  out.files.push_back(factors.header);
-  out.files.push_back(factors.source);
-  out.kit = emit::kit_of(r.program, r.symbols, sources);
-  if (!out.kit.empty()) {
-    emit::ModelOutput model = emit::emit_model(r.program, r.symbols, sources, out.kit);
-    out.files.push_back(std::move(model.header));
-    out.files.push_back(std::move(model.source));
-    out.files.push_back(std::move(model.main));
-  }
+  const std::string& header = r.files.front().name;
+  out.domain = header.substr(0, header.size() - suffix.size());
+  out.kit = r.domain.kit;
+  out.files = std::move(r.files);
   return true;
 }
 

@@ -18,6 +18,7 @@
 #include "compiler/emit/emit_model.h"
 #include "compiler/fmt/formatter.h"
 #include "compiler/infer/infer_command.h"
+#include "compiler/lower/dump_domain_ir.h"
 #include "compiler/lower/dump_ir.h"
 #include "compiler/lower/lower_mln.h"
 #include "runtime/io/atomic_file.h"
@@ -37,6 +38,7 @@ struct Invocation {
   bool in_place = false;
   bool check_only = false;  // fmt --check
   bool dump_ir = false;
+  bool dump_domain_ir = false;
   std::string out_dir;      // emit --out, build -o
   infer::InferRequest infer;
   std::string keep_dir;     // build --keep
@@ -64,7 +66,8 @@ int cmd_check(Invocation& inv) {
   for (const std::string& path : inv.files) {
     diag::SourceManager sources;
     diag::DiagEngine diags(sources);
-    driver::FrontendResult r = driver::run_frontend(path, inv.load, sources, diags);
+    const driver::PipelineResult p = driver::run_pipeline(path, inv.load, sources, diags, driver::Goal::Check);
+    const driver::FrontendResult& r = p.front;
     const int errors = diags.error_count();
     const int warnings = diags.warning_count();
     std::cout.flush();  // keep stdout and stderr in order when both go to one terminal
@@ -142,11 +145,26 @@ int cmd_dump_ast(Invocation& inv) {
 bool lower_file(const std::string& path, Invocation& inv, lower::MlnIr& ir) {
   diag::SourceManager sources;
   diag::DiagEngine diags(sources);
-  driver::FrontendResult r = driver::run_frontend(path, inv.load, sources, diags);
-  bool ok = r.ok && lower::lower_mln(r.program, r.symbols, sources, diags, ir);
-  ok = ok && !diags.has_errors();
+  driver::PipelineResult r = driver::run_pipeline(path, inv.load, sources, diags, driver::Goal::LowerMln);
   diags.flush(std::cerr);
-  return ok;
+  if (r.ok) ir = std::move(r.mln);
+  return r.ok;
+}
+
+int cmd_dump_domain_ir(Invocation& inv) {
+  int status = kExitOk;
+  for (const std::string& path : inv.files) {
+    diag::SourceManager sources;
+    diag::DiagEngine diags(sources);
+    const driver::PipelineResult r = driver::run_pipeline(path, inv.load, sources, diags, driver::Goal::Lower);
+    diags.flush(std::cerr);
+    if (!r.ok) {
+      status = kExitErrors;
+      continue;
+    }
+    lower::dump_domain_ir(r.domain, sources, std::cout);
+  }
+  return status;
 }
 
 int cmd_dump_ir(Invocation& inv) {
@@ -170,26 +188,15 @@ int cmd_emit(Invocation& inv) {
   const std::string& path = inv.files.front();
   diag::SourceManager sources;
   diag::DiagEngine diags(sources);
-  driver::FrontendResult r = driver::run_frontend(path, inv.load, sources, diags);
-  lower::MlnIr ir;
-  const bool ok = r.ok && lower::lower_mln(r.program, r.symbols, sources, diags, ir) && !diags.has_errors();
+  const driver::PipelineResult r = driver::run_pipeline(path, inv.load, sources, diags, driver::Goal::Emit);
   diags.flush(std::cerr);
-  if (!ok) return kExitErrors;
-  if (inv.dump_ir) lower::dump_ir(ir, std::cout);
-
-  std::vector<emit::GeneratedFile> files;
-  const emit::FactorsOutput factors = emit::emit_factors(ir);
-  files.push_back(factors.header);
-  files.push_back(factors.source);
-  const std::string kit = emit::kit_of(r.program, r.symbols, sources);
-  if (kit.empty()) {
+  if (!r.ok) return kExitErrors;
+  if (inv.dump_ir) lower::dump_ir(r.mln, std::cout);
+  if (inv.dump_domain_ir) lower::dump_domain_ir(r.domain, sources, std::cout);
+  const std::vector<emit::GeneratedFile>& files = r.files;
+  if (r.domain.kit.empty()) {
     std::cerr << path << ": note: the likelihood is not declared by a stdlib kit (stdlib/<kit>.ksm); "
               << "only the Markov logic factors were generated\n";
-  } else {
-    const emit::ModelOutput model = emit::emit_model(r.program, r.symbols, sources, kit);
-    files.push_back(model.header);
-    files.push_back(model.source);
-    files.push_back(model.main);
   }
   std::error_code ec;
   std::filesystem::create_directories(inv.out_dir, ec);
@@ -241,7 +248,7 @@ const std::vector<Command>& commands() {
       {"check", "ksmc check [--dump-ast] [-I DIR] FILE...",
        "check domain files; prints one summary line per file", cmd_check},
       {"fmt", "ksmc fmt [--in-place | --check] FILE...", "print FILE in canonical layout (comments kept)", cmd_fmt},
-      {"emit", "ksmc emit [--dump-ir] FILE --out DIR",
+      {"emit", "ksmc emit [--dump-ir] [--dump-domain-ir] FILE --out DIR",
        "write the generated C++ of FILE: DIR/<domain>_factors.{h,cpp}, <domain>_model.{h,cpp}, <domain>_main.cpp", cmd_emit},
       {"infer", "ksmc infer FILE --evidence E.db [--query p,q] [--method exact|gibbs|mcsat|map|auto] [--seed N]",
        "Markov logic inference without compiling: prints `pred(args) probability`, sorted", cmd_infer},
@@ -259,13 +266,15 @@ void print_help(std::ostream& out) {
   for (const Command& c : commands()) out << "  " << c.usage << "\n      " << c.summary << "\n";
   out << "  ksmc --dump-ast FILE\n      print the syntax tree of FILE (no checks)\n"
       << "  ksmc --dump-ir FILE\n      print the lowered clause program of FILE (after checking)\n"
-      << "  ksmc --list-passes\n      list the front-end passes in order\n\n"
+      << "  ksmc --dump-domain-ir FILE\n      print the typed domain IR of FILE: every stdlib call with its bound arguments\n"
+      << "  ksmc --list-passes\n      list the pipeline stages and passes in order\n\n"
       << "options:\n"
       << "  -I DIR        also search DIR for included files\n"
       << "  --dump-ast    print the syntax tree (with check: after checking)\n"
       << "  --in-place    fmt: rewrite the files instead of printing\n"
       << "  --check       fmt: exit 1 and name the files that are not formatted\n"
       << "  --dump-ir     print the lowered clause program\n"
+      << "  --dump-domain-ir  print the typed domain IR (with emit: after emitting)\n"
       << "  --out DIR     emit: the output folder\n"
       << "  -o BIN        build: the binary to write (atomically)\n"
       << "  --keep DIR    build: work folder (generated C++, CMake project, build), kept and reused\n"
@@ -337,6 +346,8 @@ int run(int argc, char** argv) {
       inv.dump_ast = true;
     } else if (a == "--dump-ir") {
       inv.dump_ir = true;
+    } else if (a == "--dump-domain-ir") {
+      inv.dump_domain_ir = true;
     } else if (a == "--in-place") {
       inv.in_place = true;
     } else if (a == "--check") {
@@ -356,7 +367,7 @@ int run(int argc, char** argv) {
     } else if (a.size() > 1 && a[0] == '-') {
       std::cerr << "ksmc: unknown option '" << a << "' (see ksmc --help)\n";
       return kExitUsage;
-    } else if (command == nullptr && inv.files.empty() && !inv.dump_ast && !inv.dump_ir) {
+    } else if (command == nullptr && inv.files.empty() && !inv.dump_ast && !inv.dump_ir && !inv.dump_domain_ir) {
       for (const Command& c : commands()) {
         if (a == c.name) command = &c;
       }
@@ -376,7 +387,7 @@ int run(int argc, char** argv) {
     for (const std::string& p : driver::pass_names()) std::cout << p << "\n";
     return kExitOk;
   }
-  if (command == nullptr && !inv.dump_ast && !inv.dump_ir) {
+  if (command == nullptr && !inv.dump_ast && !inv.dump_ir && !inv.dump_domain_ir) {
     print_help(std::cerr);
     return kExitUsage;
   }
@@ -384,7 +395,10 @@ int run(int argc, char** argv) {
     std::cerr << "ksmc: no input files (see ksmc --help)\n";
     return kExitUsage;
   }
-  if (command == nullptr) return inv.dump_ir ? cmd_dump_ir(inv) : cmd_dump_ast(inv);
+  if (command == nullptr) {
+    if (inv.dump_domain_ir) return cmd_dump_domain_ir(inv);
+    return inv.dump_ir ? cmd_dump_ir(inv) : cmd_dump_ast(inv);
+  }
   return command->run(inv);
 }
 

@@ -4,6 +4,9 @@
 #include <set>
 
 #include "compiler/check/passes.h"
+#include "compiler/emit/emit_model.h"
+#include "compiler/lower/lower_domain.h"
+#include "compiler/lower/lower_mln.h"
 
 namespace ksmc::compiler::driver {
 
@@ -14,9 +17,14 @@ std::vector<std::unique_ptr<check::Pass>> make_check_passes() {
   p.push_back(std::make_unique<check::ArityPass>());
   p.push_back(std::make_unique<check::VariableTypesPass>());
   p.push_back(std::make_unique<check::WeightsPass>());
+  p.push_back(std::make_unique<check::RuleNamesPass>());
   p.push_back(std::make_unique<check::ExtractPass>());
   p.push_back(std::make_unique<check::CallsPass>());
   p.push_back(std::make_unique<check::KernelsPass>());
+  p.push_back(std::make_unique<check::ContractParamsPass>());
+  p.push_back(std::make_unique<check::ModelContractPass>());
+  p.push_back(std::make_unique<check::KernelMovesPass>());
+  p.push_back(std::make_unique<check::DomainItemsPass>());
   p.push_back(std::make_unique<check::SchedulePass>());
   p.push_back(std::make_unique<check::UsagePass>());
   return p;
@@ -25,6 +33,7 @@ std::vector<std::unique_ptr<check::Pass>> make_check_passes() {
 std::vector<std::string> pass_names() {
   std::vector<std::string> names{"parse", "build"};
   for (const auto& p : make_check_passes()) names.emplace_back("check:" + std::string(p->name()));
+  for (const char* back : {"lower:mln", "lower:domain", "emit:factors", "emit:model"}) names.emplace_back(back);
   return names;
 }
 
@@ -33,8 +42,8 @@ bool run_checks(const ast::Program& program, diag::DiagEngine& diags, check::Sym
   check::Context ctx{program, diags, {}};
   const int before = diags.error_count();
   for (const auto& pass : make_check_passes()) {
-    // Unused-declaration warnings are noise while there are errors.
-    if (pass->name() == "usage" && diags.error_count() > before) continue;
+    // Contract checks and unused-declaration warnings are noise while there are errors.
+    if (pass->needs_clean_input() && diags.error_count() > before) continue;
     pass->run(ctx);
   }
   symbols = std::move(ctx.symbols);
@@ -48,6 +57,41 @@ FrontendResult run_frontend(const std::string& path, const build::LoadOptions& o
                              : build::load_program(path, options, sources, diags, r.program);
   if (!r.loaded) return r;
   r.ok = run_checks(r.program, diags, r.symbols);
+  return r;
+}
+
+PipelineResult run_pipeline(const std::string& path, const build::LoadOptions& options, diag::SourceManager& sources,
+                            diag::DiagEngine& diags, Goal goal, const std::string* text) {
+  PipelineResult r;
+  r.front = run_frontend(path, options, sources, diags, text);
+  if (!r.front.ok) return r;
+  if (goal == Goal::Check) {
+    r.ok = true;
+    return r;
+  }
+  // lower:mln
+  if (!lower::lower_mln(r.front.program, r.front.symbols, sources, diags, r.mln) || diags.has_errors()) return r;
+  if (goal == Goal::LowerMln) {
+    r.ok = true;
+    return r;
+  }
+  // lower:domain
+  r.domain = lower::lower_domain(r.front.program, r.front.symbols, sources);
+  if (goal == Goal::Lower) {
+    r.ok = true;
+    return r;
+  }
+  // emit:factors, emit:model
+  const emit::FactorsOutput factors = emit::emit_factors(r.mln);
+  r.files.push_back(factors.header);
+  r.files.push_back(factors.source);
+  if (!r.domain.kit.empty()) {
+    emit::ModelOutput model = emit::emit_model(r.domain);
+    r.files.push_back(std::move(model.header));
+    r.files.push_back(std::move(model.source));
+    r.files.push_back(std::move(model.main));
+  }
+  r.ok = true;
   return r;
 }
 

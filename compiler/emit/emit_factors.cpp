@@ -141,12 +141,12 @@ class FactorsEmitter {
         << pred.exclusive_arg << "});\n";
     }
     for (const auto& r : ir_.rules) {
-      o << "    // " << r.name << " (" << r.file << ":" << r.line << ")\n";
+      o << "    // " << r.name << ": " << (r.kind == RuleIr::WeightKind::Hard ? "hard " : "") << r.text << "\n";
       if (r.group >= 0) {
         const auto& g = p_.groups[static_cast<std::size_t>(r.group)];
         o << "    p.add_group({{";
         for (std::size_t k = 0; k < g.predicates.size(); ++k) o << (k ? ", " : "") << pred_enum(p_, g.predicates[k]);
-        o << "}, " << cpp_string(g.text) << ", {" << cpp_string(g.loc.file) << ", " << g.loc.line << "}});\n";
+        o << "}, " << cpp_string(g.text) << ", {" << cpp_string(g.loc.file) << ", 0}});\n";
         continue;
       }
       for (int ci : r.clauses) {
@@ -166,7 +166,7 @@ class FactorsEmitter {
           o << "}}";
         }
         o << "},\n                  " << weight_expr(r) << ", " << (c.hard ? "true" : "false") << ", " << cpp_string(c.text)
-          << ", {" << cpp_string(c.loc.file) << ", " << c.loc.line << "}});\n";
+          << ", {" << cpp_string(c.loc.file) << ", 0}});\n";
       }
     }
     o << "    return p;\n"
@@ -242,10 +242,10 @@ class FactorsEmitter {
     for (const auto& v : c.variables) types.insert(v.type);
 
     const std::string w = hard ? "" : weight_expr(r);
-    o << "// " << r.name << " (" << r.file << ":" << r.line << "): " << (hard ? "hard " : "") << r.text << "\n";
-    if (r.clauses.size() > 1)
+    o << "// " << r.name << ": " << (hard ? "hard " : "") << r.text << "\n";
+      if (r.clauses.size() > 1)
       o << "// clause " << origin.position + 1 << " of " << r.clauses.size() << ": " << lower::clause_text(p_, c) << "\n";
-    o << "void ground_" << cpp_identifier(c.name) << "(mln::FactorContext& g) {\n";
+    o << "void ground_" << cpp_identifier(c.name) << "(mln::FactorContext& g, std::int32_t clause) {\n";
     for (auto t : types) o << "  const std::int32_t " << size_var(p_, t) << " = g.size(" << type_enum(p_, t) << ");\n";
     // Remaining groundings below depth d (for the weight of a soft clause satisfied early).
     auto remaining = [&](std::size_t d) {
@@ -312,12 +312,12 @@ class FactorsEmitter {
       o << indent << "}\n";
     }
     if (hard) {
-      o << indent << "g.hard(" << ci << ", {";
+      o << indent << "g.hard(clause, {";
       for (std::size_t v = 0; v < c.variables.size(); ++v)
         o << (v ? ", " : "") << (c.variables[v].existential ? "0" : loop_var(c, static_cast<std::int32_t>(v)));
       o << "});\n";
     } else {
-      o << indent << "g.soft(" << w << ", " << ci << ");\n";
+      o << indent << "g.soft(" << w << ", clause);\n";
     }
     for (std::size_t d = universal.size(); d-- > 0;) {
       indent.resize(indent.size() - 2);
@@ -329,8 +329,9 @@ class FactorsEmitter {
   void ground_fn(std::ostringstream& o) {
     o << "mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) {\n"
       << "  mln::Grounding grounding = mln::prepare_grounding(program(), domain, evidence);\n"
-      << "  mln::FactorContext g(grounding, evidence);\n";
-    for (const auto& c : p_.clauses) o << "  ground_" << cpp_identifier(c.name) << "(g);\n";
+      << "  mln::FactorContext g(grounding, evidence);\n"
+      << "  std::int32_t clause = 0;  // clause index in program() order\n";
+    for (const auto& c : p_.clauses) o << "  ground_" << cpp_identifier(c.name) << "(g, clause++);\n";
     o << "  return grounding;\n"
       << "}\n\n";
   }

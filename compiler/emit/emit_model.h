@@ -1,24 +1,21 @@
-// `ksmc emit`, second half: the sampler glue of a domain.
+// `ksmc emit`, second half: the binding of a domain to its stdlib kit (docs/binding.md §3).
 //
-//   <domain>_model.h/.cpp  domain_config(): every model, extract, prior, likelihood, kernel
-//                          and schedule item of the domain file as a
-//                          ksmc::runtime::domain::DomainConfig (stdlib calls with parameters
-//                          checked against their declared signatures, defaults filled in,
-//                          numbers in base units), one statement per item with the item's
-//                          text and file:line; mln_binding(): the generated factors.
-//   <domain>_main.cpp      the entry point: the common domain CLI over the domain's stdlib
-//                          kit, configured by domain_config().
+//   <domain>_model.h/.cpp  binding(): a blocks::Binding of the kit filled from the domain file:
+//                          per `extract` a function calling the extractor it names, per
+//                          conditional prior a term function, and one statement per prior,
+//                          likelihood, output, kernel direction and schedule row, calling the
+//                          kit's blocks directly with their arguments bound in signature order,
+//                          defaults filled in, numbers in base units.
+//   <domain>_main.cpp      the entry point: the common domain CLI over the kit's domain_spec().
 //
-// One schedule row, one extractor, one kernel declaration: one line each, so editing one
-// probability or parameter in the domain file changes one line of the output.
+// Names come from the domain file only; no source line numbers appear (comments and text
+// fields hold the item as written), so an edit changes only the lines of the edited item.
 #pragma once
 
 #include <string>
 
-#include "compiler/ast/ast.h"
-#include "compiler/check/symbols.h"
-#include "compiler/diag/source_manager.h"
 #include "compiler/emit/emit_factors.h"
+#include "compiler/lower/domain_ir.h"
 
 namespace ksmc::compiler::emit {
 
@@ -28,14 +25,7 @@ struct ModelOutput {
   GeneratedFile main;
 };
 
-// `kit`: the stdlib package whose kit runs the domain (e.g. "tabletop"): the package of the
-// file declaring the domain's likelihood (see kit_of()).
-ModelOutput emit_model(const ast::Program& program, const check::SymbolTable& symbols,
-                       const diag::SourceManager& sources, const std::string& kit);
-
-// The stdlib package that declares the domain's likelihood: "stdlib/indoor.ksm" gives
-// "indoor". Empty when the domain has no likelihood or it is not declared in stdlib/.
-std::string kit_of(const ast::Program& program, const check::SymbolTable& symbols,
-                   const diag::SourceManager& sources);
+// The binding of the domain in `ir` to its kit `ir.kit` (non-empty).
+ModelOutput emit_model(const lower::DomainIr& ir);
 
 }  // namespace ksmc::compiler::emit

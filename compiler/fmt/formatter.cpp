@@ -120,15 +120,41 @@ class Formatter {
       for (std::size_t i = 0; i < x.params.size(); ++i) {
         const ast::Param& p = x.params[i];
         out_ += (i ? ", " : "") + p.name.name + ": " + print_type(p.type);
+        if (p.range) {
+          out_ += std::string(" in ") + (p.range->lo_open ? "(" : "[") + bound(p.range->lo) + ", " + bound(p.range->hi) +
+                  (p.range->hi_open ? ")" : "]");
+        }
+        if (p.rowsum) out_ += " rowsum " + print_number(*p.rowsum);
         if (p.default_value) out_ += " = " + print_expr(*p.default_value);
       }
       out_ += ")";
     }
     if (x.result) out_ += " -> " + print_type(*x.result);
+    if (x.reads) out_ += " reads " + print_type(*x.reads);
+    if (x.moves.kind != ast::MoveSpec::Kind::None) {
+      const bool makes = x.moves.kind == ast::MoveSpec::Kind::Makes;
+      out_ += makes ? " makes " : " serves ";
+      for (std::size_t i = 0; i < x.moves.moves.size(); ++i) out_ += (i ? (makes ? " / " : ", ") : "") + x.moves.moves[i].name;
+    }
     out_ += ";";
   }
+  static std::string bound(const ast::Bound& b) {
+    return b.inf ? (b.negative ? "-inf" : "inf") : print_number(b.number);
+  }
+  void emit(const ast::ModelContractDecl& d) {
+    out_ += "extern model(";
+    for (std::size_t i = 0; i < d.slots.size(); ++i) {
+      const ast::ModelSlot& s = d.slots[i];
+      out_ += (i ? ", " : "") + s.type.name;
+      if (s.collection) out_ += "[" + (s.index ? s.index->name : std::string()) + "]";
+      out_ += s.sampled ? " sampled" : " fixed";
+    }
+    out_ += ");";
+  }
+  void emit(const ast::OutputDecl& o) { out_ += "output " + print_call(o.call) + ";"; }
   void emit(const ast::Rule& r) {
     std::string head;
+    if (r.label) head += "@" + r.label->name + " ";
     if (r.hard) head += "hard ";
     if (r.prob) head += "prob " + print_number(*r.prob) + ": ";
     if (r.weight) head += "w " + print_number(*r.weight) + ": ";

@@ -22,7 +22,10 @@ std::string print_number(const ast::Number& n) { return n.unit.empty() ? n.text 
 std::string print_type(const ast::TypeRef& t) {
   if (t.is_set) return "set<" + t.name + ">";
   std::string s = t.name;
-  for (int i = 0; i < t.list_depth; ++i) s += "[]";
+  for (int i = 0; i < t.list_depth; ++i) {
+    const int n = i < static_cast<int>(t.dims.size()) ? t.dims[static_cast<std::size_t>(i)] : 0;
+    s += n > 0 ? "[" + std::to_string(n) + "]" : std::string("[]");
+  }
   return s;
 }
 

@@ -7,6 +7,7 @@
 #include <map>
 #include <string>
 
+#include "compiler/check/rule_names.h"
 #include "compiler/lower/cnf.h"
 #include "compiler/lower/dump_ir.h"
 
@@ -14,41 +15,6 @@ namespace ksmc::compiler::lower {
 namespace {
 
 namespace mln = ksmc::runtime::mln;
-
-// Predicates named in the head of a rule (the consequent of a top-level implication, or
-// the whole formula), in order of appearance, deduplicated.
-void head_predicates(const ast::Formula& f, std::vector<std::string>& out) {
-  if (f.kind == ast::Formula::Kind::Atom) {
-    if (std::find(out.begin(), out.end(), f.atom.pred.name) == out.end()) out.push_back(f.atom.pred.name);
-    return;
-  }
-  for (const auto& c : f.children) head_predicates(c, out);
-}
-
-std::string identifier_part(const std::string& s) {
-  std::string out;
-  for (unsigned char ch : s) {
-    if (std::isalnum(ch)) out.push_back(static_cast<char>(std::tolower(ch)));
-    else if (!out.empty() && out.back() != '_') out.push_back('_');
-  }
-  while (!out.empty() && out.back() == '_') out.pop_back();
-  return out;
-}
-
-std::string rule_name(int number, const ast::Rule& r) {
-  std::vector<std::string> preds;
-  if (r.exactly_one) {
-    for (const auto& a : r.alternatives)
-      if (std::find(preds.begin(), preds.end(), a.pred.name) == preds.end()) preds.push_back(a.pred.name);
-  } else if (r.formula.kind == ast::Formula::Kind::Implies || r.formula.kind == ast::Formula::Kind::Iff) {
-    head_predicates(r.formula.children.at(1), preds);
-  } else {
-    head_predicates(r.formula, preds);
-  }
-  std::string name = "r" + std::to_string(number);
-  for (std::size_t i = 0; i < preds.size() && i < 3; ++i) name += "_" + identifier_part(preds[i]);
-  return name;
-}
 
 class Lowerer {
  public:
@@ -120,7 +86,8 @@ class Lowerer {
   bool add_rule(int number, const ast::Rule& r, const ast::Loc& loc) {
     RuleIr ir;
     ir.number = number;
-    ir.name = rule_name(number, r);
+    const auto named = symbols_.rule_names.find(&r);
+    ir.name = named != symbols_.rule_names.end() ? named->second : check::rule_name(r);
     ir.text = formula_text(r);
     ir.file = sources_.path(loc.file);
     ir.line = loc.line;

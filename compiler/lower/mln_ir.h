@@ -12,7 +12,7 @@ namespace ksmc::compiler::lower {
 struct RuleIr {
   enum class WeightKind { Hard, Prob, Raw };
   int number = 0;            // 1-based position among the main file's rules
-  std::string name;          // "r10_supportive_supported": number + predicates of the head
+  std::string name;          // `@name`, or content-derived: "supportive_supported_3fa1" (check/rule_names.h)
   std::string text;          // the rule as written
   std::string file;          // as given on the command line
   int line = 0;

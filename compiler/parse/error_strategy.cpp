@@ -25,8 +25,15 @@ std::string context_name(antlr4::ParserRuleContext* ctx) {
     case P::RulePredArg: return "predicate declaration";
     case P::RuleUnitDef: return "unit definition";
     case P::RuleQualName: return "name";
-    case P::RuleParam: return "parameter declaration";
-    case P::RuleTypeRef: return "type";
+    case P::RuleParam:
+    case P::RuleParamRange:
+    case P::RuleBound:
+    case P::RuleRowSum: return "parameter declaration";
+    case P::RuleTypeRef:
+    case P::RuleDim: return "type";
+    case P::RuleMoveSpec: return "extern declaration";
+    case P::RuleModelSlot: return "model contract";
+    case P::RuleRuleName: return "rule name";
     case P::RuleRuleHead: return "rule weight";
     case P::RuleRuleBody:
     case P::RuleFormula:

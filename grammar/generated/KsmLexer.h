@@ -21,8 +21,9 @@ public:
     T__32 = 33, T__33 = 34, T__34 = 35, T__35 = 36, T__36 = 37, T__37 = 38, 
     T__38 = 39, T__39 = 40, T__40 = 41, T__41 = 42, T__42 = 43, T__43 = 44, 
     T__44 = 45, T__45 = 46, T__46 = 47, T__47 = 48, T__48 = 49, T__49 = 50, 
-    T__50 = 51, T__51 = 52, T__52 = 53, T__53 = 54, NUMBER = 55, IDENT = 56, 
-    STRING = 57, LINE_COMMENT = 58, BLOCK_COMMENT = 59, WS = 60, ERRCHAR = 61
+    T__50 = 51, T__51 = 52, T__52 = 53, T__53 = 54, T__54 = 55, T__55 = 56, 
+    T__56 = 57, T__57 = 58, T__58 = 59, T__59 = 60, NUMBER = 61, IDENT = 62, 
+    STRING = 63, LINE_COMMENT = 64, BLOCK_COMMENT = 65, WS = 66, ERRCHAR = 67
   };
 
   KsmLexer(antlr4::CharStream *input);

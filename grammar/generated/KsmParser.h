@@ -21,18 +21,21 @@ public:
     T__32 = 33, T__33 = 34, T__34 = 35, T__35 = 36, T__36 = 37, T__37 = 38, 
     T__38 = 39, T__39 = 40, T__40 = 41, T__41 = 42, T__42 = 43, T__43 = 44, 
     T__44 = 45, T__45 = 46, T__46 = 47, T__47 = 48, T__48 = 49, T__49 = 50, 
-    T__50 = 51, T__51 = 52, T__52 = 53, T__53 = 54, NUMBER = 55, IDENT = 56, 
-    STRING = 57, LINE_COMMENT = 58, BLOCK_COMMENT = 59, WS = 60, ERRCHAR = 61
+    T__50 = 51, T__51 = 52, T__52 = 53, T__53 = 54, T__54 = 55, T__55 = 56, 
+    T__56 = 57, T__57 = 58, T__58 = 59, T__59 = 60, NUMBER = 61, IDENT = 62, 
+    STRING = 63, LINE_COMMENT = 64, BLOCK_COMMENT = 65, WS = 66, ERRCHAR = 67
   };
 
   enum {
     RuleFile = 0, RuleItem = 1, RuleExternKind = 2, RulePredSig = 3, RulePredArg = 4, 
-    RuleUnitDef = 5, RuleQualName = 6, RuleParam = 7, RuleTypeRef = 8, RuleRuleHead = 9, 
-    RuleRuleBody = 10, RuleFormula = 11, RuleImplication = 12, RuleDisjunction = 13, 
-    RuleConjunction = 14, RuleUnary = 15, RuleAtom = 16, RuleModelVar = 17, 
-    RulePriorForm = 18, RuleCondition = 19, RuleKernelParams = 20, RuleKparam = 21, 
-    RuleScheduleRow = 22, RuleRangeEnd = 23, RuleScheduleEntry = 24, RuleCall = 25, 
-    RuleArg = 26, RuleExpr = 27, RuleNumber = 28
+    RuleUnitDef = 5, RuleQualName = 6, RuleParam = 7, RuleTypeRef = 8, RuleDim = 9, 
+    RuleParamRange = 10, RuleBound = 11, RuleRowSum = 12, RuleMoveSpec = 13, 
+    RuleModelSlot = 14, RuleRuleName = 15, RuleRuleHead = 16, RuleRuleBody = 17, 
+    RuleFormula = 18, RuleImplication = 19, RuleDisjunction = 20, RuleConjunction = 21, 
+    RuleUnary = 22, RuleAtom = 23, RuleModelVar = 24, RulePriorForm = 25, 
+    RuleCondition = 26, RuleKernelParams = 27, RuleKparam = 28, RuleScheduleRow = 29, 
+    RuleRangeEnd = 30, RuleScheduleEntry = 31, RuleCall = 32, RuleArg = 33, 
+    RuleExpr = 34, RuleNumber = 35
   };
 
   KsmParser(antlr4::TokenStream *input);
@@ -54,6 +57,13 @@ public:
   class QualNameContext;
   class ParamContext;
   class TypeRefContext;
+  class DimContext;
+  class ParamRangeContext;
+  class BoundContext;
+  class RowSumContext;
+  class MoveSpecContext;
+  class ModelSlotContext;
+  class RuleNameContext;
   class RuleHeadContext;
   class RuleBodyContext;
   class FormulaContext;
@@ -117,6 +127,14 @@ public:
     KernelParamsContext *kernelParams();
     std::vector<CallContext *> call();
     CallContext* call(size_t i);
+  };
+
+  class  ExternModelItemContext : public ItemContext {
+  public:
+    ExternModelItemContext(ItemContext *ctx);
+
+    std::vector<ModelSlotContext *> modelSlot();
+    ModelSlotContext* modelSlot(size_t i);
   };
 
   class  KernelPairItemContext : public ItemContext {
@@ -185,6 +203,7 @@ public:
 
     RuleHeadContext *ruleHead();
     RuleBodyContext *ruleBody();
+    RuleNameContext *ruleName();
   };
 
   class  ExtractItemContext : public ItemContext {
@@ -199,11 +218,21 @@ public:
   public:
     ExternItemContext(ItemContext *ctx);
 
+    KsmParser::TypeRefContext *reads = nullptr;
     ExternKindContext *externKind();
     QualNameContext *qualName();
-    TypeRefContext *typeRef();
+    std::vector<TypeRefContext *> typeRef();
+    TypeRefContext* typeRef(size_t i);
+    MoveSpecContext *moveSpec();
     std::vector<ParamContext *> param();
     ParamContext* param(size_t i);
+  };
+
+  class  OutputItemContext : public ItemContext {
+  public:
+    OutputItemContext(ItemContext *ctx);
+
+    CallContext *call();
   };
 
   class  IncludeItemContext : public ItemContext {
@@ -299,6 +328,8 @@ public:
     virtual size_t getRuleIndex() const override;
     antlr4::tree::TerminalNode *IDENT();
     TypeRefContext *typeRef();
+    ParamRangeContext *paramRange();
+    RowSumContext *rowSum();
     ExprContext *expr();
 
    
@@ -323,7 +354,10 @@ public:
   public:
     NamedTypeContext(TypeRefContext *ctx);
 
+    antlr4::Token *name = nullptr;
     antlr4::tree::TerminalNode *IDENT();
+    std::vector<DimContext *> dim();
+    DimContext* dim(size_t i);
   };
 
   class  SetTypeContext : public TypeRefContext {
@@ -335,6 +369,114 @@ public:
   };
 
   TypeRefContext* typeRef();
+
+  class  DimContext : public antlr4::ParserRuleContext {
+  public:
+    DimContext(antlr4::ParserRuleContext *parent, size_t invokingState);
+    virtual size_t getRuleIndex() const override;
+    antlr4::tree::TerminalNode *NUMBER();
+
+   
+  };
+
+  DimContext* dim();
+
+  class  ParamRangeContext : public antlr4::ParserRuleContext {
+  public:
+    antlr4::Token *lo = nullptr;;
+    KsmParser::BoundContext *lower = nullptr;;
+    KsmParser::BoundContext *upper = nullptr;;
+    antlr4::Token *hi = nullptr;;
+    ParamRangeContext(antlr4::ParserRuleContext *parent, size_t invokingState);
+    virtual size_t getRuleIndex() const override;
+    std::vector<BoundContext *> bound();
+    BoundContext* bound(size_t i);
+
+   
+  };
+
+  ParamRangeContext* paramRange();
+
+  class  BoundContext : public antlr4::ParserRuleContext {
+  public:
+    antlr4::Token *neg = nullptr;;
+    BoundContext(antlr4::ParserRuleContext *parent, size_t invokingState);
+    virtual size_t getRuleIndex() const override;
+    NumberContext *number();
+
+   
+  };
+
+  BoundContext* bound();
+
+  class  RowSumContext : public antlr4::ParserRuleContext {
+  public:
+    antlr4::Token *kw = nullptr;;
+    RowSumContext(antlr4::ParserRuleContext *parent, size_t invokingState);
+    virtual size_t getRuleIndex() const override;
+    NumberContext *number();
+    antlr4::tree::TerminalNode *IDENT();
+
+   
+  };
+
+  RowSumContext* rowSum();
+
+  class  MoveSpecContext : public antlr4::ParserRuleContext {
+  public:
+    MoveSpecContext(antlr4::ParserRuleContext *parent, size_t invokingState);
+   
+    MoveSpecContext() = default;
+    void copyFrom(MoveSpecContext *context);
+    using antlr4::ParserRuleContext::copyFrom;
+
+    virtual size_t getRuleIndex() const override;
+
+   
+  };
+
+  class  MakesSpecContext : public MoveSpecContext {
+  public:
+    MakesSpecContext(MoveSpecContext *ctx);
+
+    std::vector<antlr4::tree::TerminalNode *> IDENT();
+    antlr4::tree::TerminalNode* IDENT(size_t i);
+  };
+
+  class  ServesSpecContext : public MoveSpecContext {
+  public:
+    ServesSpecContext(MoveSpecContext *ctx);
+
+    std::vector<antlr4::tree::TerminalNode *> IDENT();
+    antlr4::tree::TerminalNode* IDENT(size_t i);
+  };
+
+  MoveSpecContext* moveSpec();
+
+  class  ModelSlotContext : public antlr4::ParserRuleContext {
+  public:
+    antlr4::Token *index = nullptr;;
+    antlr4::Token *vmode = nullptr;;
+    ModelSlotContext(antlr4::ParserRuleContext *parent, size_t invokingState);
+    virtual size_t getRuleIndex() const override;
+    std::vector<antlr4::tree::TerminalNode *> IDENT();
+    antlr4::tree::TerminalNode* IDENT(size_t i);
+
+   
+  };
+
+  ModelSlotContext* modelSlot();
+
+  class  RuleNameContext : public antlr4::ParserRuleContext {
+  public:
+    RuleNameContext(antlr4::ParserRuleContext *parent, size_t invokingState);
+    virtual size_t getRuleIndex() const override;
+    antlr4::tree::TerminalNode *IDENT();
+
+   
+  };
+
+  RuleNameContext* ruleName();
 
   class  RuleHeadContext : public antlr4::ParserRuleContext {
   public:

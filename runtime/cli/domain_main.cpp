@@ -1,5 +1,6 @@
 #include "runtime/cli/domain_main.h"
 
+#include <exception>
 #include <map>
 #include <memory>
 #include <optional>
@@ -14,6 +15,8 @@
 #include "runtime/cli/interrupt.h"
 #include "runtime/cli/progress.h"
 #include "runtime/cli/run_outputs.h"
+#include "runtime/domain/config_error.h"
+#include "runtime/io/atomic_file.h"
 
 namespace ksmc::runtime::cli {
 
@@ -31,6 +34,7 @@ struct CommonFlags {
   bool trace = false;
   std::uint64_t trace_every = 0;
   bool quiet = false;
+  std::string evidence_out;
   std::vector<std::string> inputs;
 };
 
@@ -90,6 +94,27 @@ int failure(const CliStreams& io, const DomainSpec& spec, const std::string& msg
   return kExitError;
 }
 
+// Whether `e` is, or carries (std::throw_with_nested, e.g. the engine's "chain N: ..."), a
+// runtime::domain::ConfigError.
+bool is_config_error(const std::exception& e) {
+  if (dynamic_cast<const domain::ConfigError*>(&e)) return true;
+  try {
+    std::rethrow_if_nested(e);
+  } catch (const std::exception& inner) {
+    return is_config_error(inner);
+  } catch (...) {
+  }
+  return false;
+}
+
+// An error of load / run / output: a ConfigError is an internal error (the kit cannot run
+// what `ksmc check` accepted, runtime/domain/binding.h), anything else bad input (exit 1).
+int failure(const CliStreams& io, const DomainSpec& spec, const std::exception& e) {
+  if (!is_config_error(e)) return failure(io, spec, std::string(e.what()));
+  io.err << spec.name << ": internal error: " << e.what() << " (ksmc check accepted this domain file; please report it)\n";
+  return kExitInternal;
+}
+
 }  // namespace
 
 int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec) {
@@ -118,6 +143,9 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
     app.add_flag("--trace", cf.trace, "write trace.csv (log posterior and acceptance rate per chain)");
     app.add_option("--trace-every", cf.trace_every, "iterations between trace rows (default: iterations/1000; implies --trace)");
     app.add_flag("--quiet,-q", cf.quiet, "no progress display");
+    app.add_option("--evidence-out", cf.evidence_out,
+                   "write the best state's evidence as an Alchemy .db (replay with ksmc infer --evidence)")
+        ->type_name("FILE");
     add_domain_flags(app, spec, dst);
   } catch (const CLI::Error& e) {
     return failure(io, spec, fmt::format("bad flag table of domain '{}': {}", spec.name, e.what()));
@@ -161,10 +189,12 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
   DomainSetup setup;
   try {
     setup = spec.load(input);
+    if (!cf.evidence_out.empty() && !setup.evidence_db)
+      throw UsageError(fmt::format("--evidence-out: domain '{}' has no evidence to write", spec.name));
   } catch (const UsageError& e) {
     return usage_error(io, spec, e.what());
   } catch (const std::exception& e) {
-    return failure(io, spec, e.what());
+    return failure(io, spec, e);
   }
 
   std::unique_ptr<mcmc::Engine> engine;
@@ -176,7 +206,7 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
     for (const auto& p : setup.extra_inputs) info.inputs.push_back(hash_file(p));
     out.emplace(input.out_dir);
   } catch (const std::exception& e) {
-    return failure(io, spec, e.what());
+    return failure(io, spec, e);
   }
 
   mcmc::EngineConfig cfg;
@@ -198,7 +228,7 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
   try {
     result = engine->run(cfg);
   } catch (const std::exception& e) {
-    return failure(io, spec, e.what());
+    return failure(io, spec, e);
   }
   const bool interrupted = result.cancelled || InterruptGuard::interrupted();
   if (interrupted) {
@@ -210,10 +240,11 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
   info.config = cfg;
   info.domain_extra = setup.summary_extra.is_object() ? setup.summary_extra : nlohmann::json::object();
   try {
-    if (setup.write_results) {
+    if (setup.write_results || !cf.evidence_out.empty()) {
       std::unique_ptr<mcmc::Model> best = setup.model_factory(static_cast<unsigned>(result.best_chain));
       best->restore(result.best().best_state);
-      setup.write_results(result, *best, *out);
+      if (setup.write_results) setup.write_results(result, *best, *out);
+      if (!cf.evidence_out.empty()) runtime::io::write_file_atomic(cf.evidence_out, setup.evidence_db(*best));
     }
     out->write("best_state.json", best_state_json(result).dump(2) + "\n");
     if (cfg.trace_every != 0) out->write("trace.csv", trace_csv(result));
@@ -221,7 +252,7 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
     info.outputs = out->written();
     out->write("summary.json", make_summary(result, engine->schedule(), info).dump(2) + "\n");
   } catch (const std::exception& e) {
-    return failure(io, spec, e.what());
+    return failure(io, spec, e);
   }
   if (!cf.quiet) {
     io.err << fmt::format("{}: best log posterior {} (chain {}, iteration {}); outputs in {}\n", spec.name,

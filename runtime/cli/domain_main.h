@@ -7,7 +7,10 @@
 // Writes into --out DIR (created if missing), every file atomically: the domain's own
 // results, best_state.json, trace.csv (--trace), samples.jsonl (--samples N > 0) and,
 // last, summary.json. Exit codes: 0 done, 1 error (bad input, cannot write; the message
-// names the file), 2 usage error, 130 interrupted by Ctrl-C (outputs still complete).
+// names the file), 2 usage error, 3 internal error (a runtime::domain::ConfigError: the kit
+// cannot run a configuration `ksmc check` accepted), 130 interrupted by Ctrl-C (outputs
+// still complete). `--evidence-out FILE` writes the best state's evidence as an Alchemy
+// `.db` (DomainSetup::evidence_db), atomically.
 #pragma once
 
 #include <iostream>
@@ -20,6 +23,7 @@ namespace ksmc::runtime::cli {
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitError = 1;
 inline constexpr int kExitUsage = 2;
+inline constexpr int kExitInternal = 3;
 inline constexpr int kExitInterrupted = 130;
 
 struct CliStreams {

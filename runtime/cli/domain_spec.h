@@ -95,6 +95,10 @@ struct DomainSetup {
   // best chain restored to the best state. Optional.
   std::function<void(const mcmc::RunResult&, mcmc::Model& best, OutputDir& out)> write_results;
   nlohmann::json summary_extra = nlohmann::json::object();  // copied under "domain" in summary.json
+  // The evidence of `best` (the best state) as Alchemy `.db` text, written by
+  // `--evidence-out FILE` (kits: runtime::domain::Semantics::evidence_db). Optional: without
+  // it, --evidence-out is a usage error.
+  std::function<std::string(mcmc::Model& best)> evidence_db;
 };
 
 struct DomainSpec {
@@ -107,7 +111,9 @@ struct DomainSpec {
   std::uint64_t default_iterations = 10000;
   std::vector<DomainFlag> flags;
   // Loads the input. Throw std::exception on bad input with a message naming the file
-  // and the place ("map.yaml:3: resolution must be positive"): exit code 1.
+  // and the place ("map.yaml:3: resolution must be positive"): exit code 1. A
+  // runtime::domain::ConfigError (here, in the models or while writing) is an internal
+  // error: exit code 3.
   std::function<DomainSetup(const DomainInput&)> load;
 };
 

@@ -27,17 +27,11 @@
 #include <utility>
 #include <vector>
 
+#include "runtime/domain/config_error.h"
 #include "runtime/mln/grounder.h"
 #include "runtime/mln/program.h"
 
 namespace ksmc::runtime::domain {
-
-// A configuration the kit cannot run. `ksmc check` should have refused it, so the binary
-// reports it as an internal error (exit 3).
-class ConfigError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 // The generated Markov logic part of a domain (`<domain>_factors.h`).
 struct MlnBinding {

@@ -17,15 +17,11 @@
 #include <utility>
 #include <vector>
 
+#include "runtime/domain/config_error.h"
 #include "runtime/mln/grounder.h"
 #include "runtime/mln/program.h"
 
 namespace ksmc::runtime::domain {
-
-class ConfigError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 struct Value {
   enum class Kind { Number, Bool, String, Name, Index, List, Set, Call };

@@ -8,14 +8,32 @@
 // Typical kit use:
 //   Semantics<Scene> sem(binding, {.log_map = true});
 //   auto out = sem.evaluate(scene, n);               // all atoms
-//   auto out = sem.update(scene, n, changed);        // only atoms touching changed constants
+//   auto out = sem.update(scene, n, changed, *base); // only atoms touching changed constants
 //   double p = sem.value(*out, pred, {i, j});        // marginal (query) or 0/1 (evidence)
 //   double lp = sem.conditional_priors(scene, *out); // Σ terms of `prior for ... where ...`
-//   json q = sem.queries_json(*out, names);          // {"Room": {"u3": 0.91}, "SaLe": {"u3,u7": 0.8}}
+//   auto q = sem.queries_json(*out, names);          // {"Room": {"u3": 0.91}, "SaLe": {"u3,u7": 0.8}}
 //   std::string db = sem.evidence_db(*out, names);   // Alchemy .db of the evidence atoms
+//
+// Constants. The constants of the binding's constant type are its enumerated constants (from
+// the generated make_domain(), usually none) followed by the n run-time constants (the
+// scene's elements in scene order). A constant index is that position; it is what extractors,
+// terms, `value` and `changed` take. Other types have only their enumerated constants.
+// `names` (queries_json, evidence_db) name the n run-time constants; internally they are
+// anonymous.
+//
+// Evidence. Extractor k gives the truth of every ground atom of its predicate, except that
+// an atom whose arguments repeat one constant of the constant type (`touching(a, a)`) is
+// false without a call: relations hold between distinct scene elements. Evidence predicates
+// without an extractor are false everywhere (closed world, as in a `.db` file).
+//
+// Outcomes. A hard rule violated by the evidence makes the outcome impossible: possible =
+// false, log_z = log_map = -inf, query values 0. Inference is mln::infer with Method::Auto
+// (exact per component when small enough, MC-SAT otherwise) and, with log_map, exact_map
+// (MaxWalkSAT for a component too large to enumerate).
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <span>
 #include <string>
@@ -24,12 +42,13 @@
 #include <nlohmann/json.hpp>
 
 #include "runtime/domain/binding.h"
+#include "runtime/mln/evidence_cache.h"
 
 namespace ksmc::runtime::domain {
 
 struct SemanticOptions {
   std::size_t cache_capacity = 256;
-  std::uint64_t seed = 1;          // MC-SAT / MaxWalkSAT seeds for components too large to enumerate
+  std::uint64_t seed = 1;          // MC-SAT / AIS / MaxWalkSAT seeds for components too large to enumerate
   bool log_z = false;              // compute Outcome::log_z
   bool log_map = false;            // compute Outcome::log_map
   std::uint64_t mcsat_samples = 500;
@@ -44,8 +63,9 @@ struct Outcome {
   std::vector<std::vector<double>> values;
   double log_z = 0.0;    // with SemanticOptions::log_z; -inf when a hard rule is violated
   double log_map = 0.0;  // with SemanticOptions::log_map: Σ w n of the most probable world
-  bool exact = true;     // every component was enumerated / eliminated exactly
-  std::string method;    // of the inference run
+  bool possible = true;  // false: the evidence violates a hard rule
+  bool exact = true;     // marginals, log Z and log MAP (those computed) are exact, not sampled
+  std::string method;    // of the inference run ("none" when there is no atom)
 };
 
 struct SemanticStats {
@@ -56,6 +76,9 @@ struct SemanticStats {
 // Type-erased core (semantics.cpp); Semantics<Scene> below adds the scene.
 class SemanticsCore {
  public:
+  // Throws ConfigError when the binding does not fit the program (incomplete Markov logic
+  // binding, an extractor for a query predicate or an unknown one, two for one predicate,
+  // an unknown constant type).
   SemanticsCore(const MlnBinding& mln, std::int32_t constant_type, std::vector<std::int32_t> extracted,
                 SemanticOptions options);
 
@@ -63,35 +86,98 @@ class SemanticsCore {
   std::int32_t constant_type() const { return constant_type_; }
   // Predicates an extractor computes (program ids, binding order).
   const std::vector<std::int32_t>& extracted() const { return extracted_; }
+  // Query predicates (program ids, program order).
+  const std::vector<std::int32_t>& queries() const { return queries_; }
+  const SemanticOptions& options() const { return options_; }
 
-  // Evidence bits for n constants: `truth(k, args)` evaluates extractor k on an atom.
-  // `changed` empty with full = true: every atom; otherwise only atoms with an argument in
-  // `changed` are re-evaluated, the rest are taken from the previous call with the same n.
+  // Evidence bits for n run-time constants: `truth(k, args)` evaluates extractor k on an atom.
+  // `full`: every atom. Otherwise only atoms with an argument in `changed` (constant indices)
+  // are evaluated; the others are taken from `base` (an outcome for n constants) or, without
+  // one, from the previous call (when it had the same n; else every atom is evaluated).
   template <class F>
-  std::shared_ptr<const Outcome> run(std::size_t n, bool full, std::span<const std::int32_t> changed, F&& truth);
+  std::shared_ptr<const Outcome> run(std::size_t n, bool full, std::span<const std::int32_t> changed,
+                                     const Outcome* base, F&& truth);
+  // The outcome when no evidence atom holds, for n run-time constants (cached per n).
+  std::shared_ptr<const Outcome> empty_evidence(std::size_t n);
 
   double value(const Outcome& o, std::int32_t predicate, std::span<const std::int32_t> args) const;
   bool holds(const Outcome& o, const Condition& c, std::span<const std::int32_t> binding) const;
-  nlohmann::json queries_json(const Outcome& o, const std::vector<std::string>& names) const;
+  // {"Pred": {"c1,c2": p, ...}, ...}: every query predicate (program order), every ground
+  // atom (constant order), marginals rounded to 1e-6. Ordered JSON: keys stay in that order.
+  nlohmann::ordered_json queries_json(const Outcome& o, const std::vector<std::string>& names) const;
+  // Alchemy `.db` text of every evidence atom: `P(a,b)` when true, `!P(a,b)` when false.
   std::string evidence_db(const Outcome& o, const std::vector<std::string>& names) const;
   const SemanticStats& stats() const { return stats_; }
   // Number of constants of `type` for n run-time constants (enumerated ones included).
   std::size_t constants_of(std::int32_t type, std::size_t n) const;
+  // Enumerated constants of the constant type (they come before the run-time ones).
+  std::size_t enumerated() const { return constants_of(constant_type_, 0); }
+  // Name of constant `index` of `type`; run-time constants take theirs from `names`.
+  const std::string& constant_name(std::int32_t type, std::int32_t index, const std::vector<std::string>& names) const;
 
  private:
+  // One extracted predicate's shape for the current n.
+  struct Shape {
+    std::vector<std::int32_t> radix;
+    std::vector<bool> of_constant_type;  // per argument
+  };
+  // Sizes bits_ for n and fills them from `base` / the previous call; true when every atom
+  // must be evaluated. Marks `changed` in changed_.
+  bool prepare(std::size_t n, bool full, std::span<const std::int32_t> changed, const Outcome* base);
+  std::shared_ptr<const Outcome> finish(std::size_t n);
   std::shared_ptr<const Outcome> infer_bits(std::size_t n);
+  std::size_t atoms_of(std::int32_t predicate, std::size_t n) const;
+  void check_names(const Outcome& o, const std::vector<std::string>& names) const;
 
   MlnBinding mln_;
   const mln::Program* program_ = nullptr;
+  mln::Domain base_domain_;  // the enumerated constants
   std::int32_t constant_type_ = -1;
   std::vector<std::int32_t> extracted_;
+  std::vector<std::int32_t> queries_;
   SemanticOptions options_;
   SemanticStats stats_;
+  bool have_bits_ = false;
   std::size_t bits_n_ = 0;
+  std::vector<Shape> shapes_;                    // per extracted predicate
   std::vector<std::vector<std::uint8_t>> bits_;  // per extracted predicate, flat
-  struct Cache;
-  std::shared_ptr<Cache> cache_;
+  std::vector<std::uint8_t> changed_;            // per constant of the constant type
+  mln::EvidenceCache<Outcome> cache_;
+  std::map<std::size_t, std::shared_ptr<const Outcome>> empty_;
 };
+
+template <class F>
+std::shared_ptr<const Outcome> SemanticsCore::run(std::size_t n, bool full, std::span<const std::int32_t> changed,
+                                                  const Outcome* base, F&& truth) {
+  const bool all = prepare(n, full, changed, base);
+  std::vector<std::int32_t> args;
+  for (std::size_t k = 0; k < extracted_.size(); ++k) {
+    const Shape& shape = shapes_[k];
+    auto& bits = bits_[k];
+    args.assign(shape.radix.size(), 0);
+    for (std::size_t flat = 0; flat < bits.size(); ++flat) {
+      if (flat != 0)  // odometer: the last argument runs fastest
+        for (std::size_t i = args.size(); i-- > 0;) {
+          if (++args[i] < shape.radix[i]) break;
+          args[i] = 0;
+        }
+      bool touched = all, repeated = false;
+      for (std::size_t i = 0; i < args.size(); ++i) {
+        if (!shape.of_constant_type[i]) continue;
+        touched = touched || changed_[static_cast<std::size_t>(args[i])] != 0;
+        for (std::size_t j = 0; j < i; ++j) repeated = repeated || (shape.of_constant_type[j] && args[j] == args[i]);
+      }
+      if (!touched) continue;
+      if (repeated) {
+        bits[flat] = 0;
+        continue;
+      }
+      ++stats_.extractor_calls;
+      bits[flat] = truth(k, args.data()) ? 1 : 0;
+    }
+  }
+  return finish(n);
+}
 
 template <class Scene>
 class Semantics {
@@ -100,17 +186,27 @@ class Semantics {
       : binding_(binding), core_(binding.mln, binding.constant_type, predicates_of(binding), options) {}
 
   std::shared_ptr<const Outcome> evaluate(const Scene& scene, std::size_t n) {
-    return core_.run(n, true, {}, truth(scene));
+    return core_.run(n, true, {}, nullptr, truth(scene));
   }
+  // Relative to the previous evaluate / update call (same n): `changed` must name every
+  // constant whose atoms may differ from that call's scene.
   std::shared_ptr<const Outcome> update(const Scene& scene, std::size_t n, std::span<const std::int32_t> changed) {
-    return core_.run(n, false, changed, truth(scene));
+    return core_.run(n, false, changed, nullptr, truth(scene));
   }
+  // Relative to `base`, the outcome of the scene before the change (same n): the usual form
+  // in a sampler, where `base` is the current state's outcome and rejected proposals leave it.
+  std::shared_ptr<const Outcome> update(const Scene& scene, std::size_t n, std::span<const std::int32_t> changed,
+                                        const Outcome& base) {
+    return core_.run(n, false, changed, &base, truth(scene));
+  }
+  std::shared_ptr<const Outcome> empty_evidence(std::size_t n) { return core_.empty_evidence(n); }
   double value(const Outcome& o, std::int32_t predicate, std::span<const std::int32_t> args) const {
     return core_.value(o, predicate, args);
   }
-  // Σ over the conditional priors and their bindings whose conditions hold of the term.
+  // Σ over the conditional priors and their bindings whose conditions hold of the term
+  // (0 for an impossible outcome).
   double conditional_priors(const Scene& scene, const Outcome& o) const;
-  nlohmann::json queries_json(const Outcome& o, const std::vector<std::string>& names) const {
+  nlohmann::ordered_json queries_json(const Outcome& o, const std::vector<std::string>& names) const {
     return core_.queries_json(o, names);
   }
   std::string evidence_db(const Outcome& o, const std::vector<std::string>& names) const {
@@ -132,5 +228,36 @@ class Semantics {
   const SemanticBinding<Scene>& binding_;
   SemanticsCore core_;
 };
+
+template <class Scene>
+double Semantics<Scene>::conditional_priors(const Scene& scene, const Outcome& o) const {
+  if (!o.possible) return 0.0;
+  double total = 0.0;
+  std::vector<std::int32_t> binding, radix;
+  for (const ConditionalPrior<Scene>& prior : binding_.conditional_priors) {
+    const std::size_t k = prior.var_types.size();
+    radix.clear();
+    std::size_t count = 1;
+    for (const std::int32_t t : prior.var_types) {
+      radix.push_back(static_cast<std::int32_t>(core_.constants_of(t, o.constants)));
+      count *= static_cast<std::size_t>(radix.back());
+    }
+    binding.assign(k, 0);
+    for (std::size_t flat = 0; flat < count; ++flat) {
+      if (flat != 0)
+        for (std::size_t i = k; i-- > 0;) {
+          if (++binding[i] < radix[i]) break;
+          binding[i] = 0;
+        }
+      bool pass = true;
+      for (const Condition& c : prior.conditions) {
+        pass = core_.holds(o, c, binding);
+        if (!pass) break;
+      }
+      if (pass) total += prior.eval(scene, binding.data());
+    }
+  }
+  return total;
+}
 
 }  // namespace ksmc::runtime::domain

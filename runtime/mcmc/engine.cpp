@@ -292,7 +292,7 @@ RunResult Engine::run(const EngineConfig& cfg) const {
     try {
       std::rethrow_exception(errors[c]);
     } catch (const std::exception& e) {
-      throw std::runtime_error(fmt::format("chain {}: {}", c, e.what()));
+      std::throw_with_nested(std::runtime_error(fmt::format("chain {}: {}", c, e.what())));  // keeps the cause's type
     }
   }
 

@@ -15,6 +15,7 @@ struct RansacParams {
   double inlier_dist = 0.03;  // metres
   int candidates = 300;       // at most this many candidates
   double max_gap = 0.30;      // metres: a larger gap between inliers ends a run
+  bool operator==(const RansacParams&) const = default;
 };
 
 struct Candidate {

@@ -37,6 +37,15 @@ struct SplitParams {
   double jitter = 0.02;
   double near = 0.05;  // points within this distance of the line make its histogram
 };
+// JITTER (its own reverse): with probability shift_prob the whole segment moves, with
+// slide_prob one endpoint slides along the segment's line, otherwise one endpoint moves.
+struct JitterParams {
+  double sigma = 0.02;
+  double shift_prob = 0.2;
+  double slide = 0.05;
+  double slide_prob = 0.4;
+};
+
 struct MergeParams {
   double eps = 0.05;
   double angle_scale = 0.17453292519943295;

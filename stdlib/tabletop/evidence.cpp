@@ -66,25 +66,4 @@ void update_evidence(Evidence& ev, const Scene& scene, std::size_t object_index,
   compute_hover(ev);
 }
 
-std::vector<GroundAtom> Evidence::atoms() const {
-  std::vector<GroundAtom> out;
-  const std::size_t n = size();
-  for (std::size_t i = 0; i < n; ++i)
-    if (is_table[i]) out.push_back({"table", {ids[i]}});
-  for (std::size_t i = 0; i < n; ++i)
-    if (stable[i]) out.push_back({"stable", {ids[i]}});
-  for (std::size_t i = 0; i < n; ++i)
-    if (hover[i]) out.push_back({"hover", {ids[i]}});
-  for (std::size_t a = 0; a < n; ++a)
-    for (std::size_t b = 0; b < n; ++b)
-      if (a != b && contact[a][b]) out.push_back({"contact", {ids[a], ids[b]}});
-  for (std::size_t a = 0; a < n; ++a)
-    for (std::size_t b = 0; b < n; ++b)
-      if (a != b && intersect[a][b]) out.push_back({"intersect", {ids[a], ids[b]}});
-  for (std::size_t a = 0; a < n; ++a)
-    for (std::size_t b = 0; b < n; ++b)
-      if (a != b && higher[a][b]) out.push_back({"higher", {ids[a], ids[b]}});
-  return out;
-}
-
 }  // namespace ksmc::stdlib::tabletop

@@ -1,8 +1,9 @@
-// Scene → ground evidence atoms for the table-top MLN:
-//   stable(o), table(o), hover(o), contact(a,b), intersect(a,b), higher(a,b).
-// Bodies are the table (index 0, id "table") followed by the scene's objects in
-// file order (index i + 1). Only true atoms are listed (closed world); contact and
-// intersect are listed in both argument orders (rules r4, r5).
+// Scene → the geometric relations of every body and pair of bodies, with one set of
+// tolerances: stable, hover, the table, contact, intersect, higher (the scene graph's
+// support and contact edges are read from them, result.h). Bodies are the table (index 0,
+// id "table") followed by the scene's objects in file order (index i + 1); contact and
+// intersect are symmetric. A domain's evidence is what its generated extractors compute
+// (blocks.h); these matrices use the same relations.
 #pragma once
 
 #include <string>
@@ -15,13 +16,6 @@
 
 namespace ksmc::stdlib::tabletop {
 
-struct GroundAtom {
-  std::string predicate;
-  std::vector<std::string> args;
-  bool operator==(const GroundAtom&) const = default;
-  auto operator<=>(const GroundAtom&) const = default;
-};
-
 struct Evidence {
   std::vector<std::string> ids;  // body ids: "table", then objects
   std::vector<Obb> boxes;
@@ -32,9 +26,6 @@ struct Evidence {
   [[nodiscard]] std::size_t size() const { return ids.size(); }
   // Body index of an object index.
   static std::size_t body(std::size_t object_index) { return object_index + 1; }
-  // Ground atoms in a fixed order: table, stable, hover, contact, intersect, higher;
-  // bodies in index order within each predicate.
-  [[nodiscard]] std::vector<GroundAtom> atoms() const;
 };
 
 Evidence extract_evidence(const Scene& scene, const EvidenceParams& params = {});

@@ -52,6 +52,10 @@ std::string graph_dot(const TabletopResult& r) {
   out += fmt::format("  {} [fillcolor=\"#bbbbbb\"];\n", quote(kTableId));
   for (std::size_t i = 0; i < r.scene.objects.size(); ++i) {
     const auto& o = r.scene.objects[i];
+    if (r.probabilities.empty()) {  // no decisions output: relations only
+      out += fmt::format("  {} [fillcolor=\"#99dd99\"];\n", quote(o.id));
+      continue;
+    }
     const auto& p = r.probabilities[i];
     const auto f = decide(p.false_prob);
     const auto h = decide(p.hidden_prob);

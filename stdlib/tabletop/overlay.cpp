@@ -36,8 +36,9 @@ cv::Mat render_overlay(const TabletopResult& r, std::vector<std::string>& warnin
   const cv::Scalar red(0, 0, 255), cyan(255, 255, 0), green(0, 200, 0);
   for (std::size_t i = 0; i < s.objects.size(); ++i) {
     const SceneObject& o = s.objects[i];
-    const auto f = decide(r.probabilities[i].false_prob);
-    const auto h = decide(r.probabilities[i].hidden_prob);
+    const bool decided = !r.probabilities.empty();
+    const auto f = decided ? decide(r.probabilities[i].false_prob) : std::nullopt;
+    const auto h = decided ? decide(r.probabilities[i].hidden_prob) : std::nullopt;
     const cv::Scalar colour = (f && *f) ? red : (h && *h) ? cyan : green;
     const Eigen::Isometry3d cam = s.camera_pose(o).isometry();
     const Obb local = Obb::from_pose(Pose{}, o.size);

@@ -24,7 +24,9 @@ struct ObjectProbabilities {
 // Input of the writers.
 struct TabletopResult {
   Scene scene;
-  std::vector<ObjectProbabilities> probabilities;  // one per scene.objects entry, same order
+  // One per scene.objects entry, same order; empty when the domain declares no decisions
+  // output (then the writers report relations only).
+  std::vector<ObjectProbabilities> probabilities;
   Evidence evidence;                               // extract_evidence(scene, ...)
 };
 
@@ -42,7 +44,10 @@ void validate_result(const TabletopResult& result);
 
 // {"objects":[{"id","pose","stable","false_prob","hidden_prob","false","hidden"}],
 //  "support":[[upper,lower]],"contact":[[a,b]]}; "pose" is in the camera frame
-// ({"t":[x,y,z],"q":[w,x,y,z]}, as in scene.json).
+// ({"t":[x,y,z],"q":[w,x,y,z]}, as in scene.json). Without probabilities the four
+// probability / decision keys are left out. Object ids are echoed in the JSON type scene.json
+// gave them (string or number), in the objects and in the edges.
 nlohmann::json scene_graph_json(const TabletopResult& result);
-
+// The JSON value of a body id: a number when scene.json gave the object a numeric id.
+nlohmann::json id_json(const Scene& scene, const std::string& id);
 }  // namespace ksmc::stdlib::tabletop

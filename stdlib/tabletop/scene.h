@@ -22,6 +22,7 @@ struct Camera {
 
 struct SceneObject {
   std::string id;
+  bool numeric_id = false;  // scene.json gave the id as a number (`id` is its JSON text); echoed as one
   std::string model;
   Eigen::Vector3d size = Eigen::Vector3d::Zero();  // full OBB extents [m]
   Pose pose;                                       // OBB centre + orientation, TABLE frame

@@ -45,7 +45,7 @@ std::vector<Edge> unstable_contact_edges(const Evidence& ev) {
 
 void validate_result(const TabletopResult& r) {
   const std::size_t n = r.scene.objects.size();
-  if (r.probabilities.size() != n)
+  if (!r.probabilities.empty() && r.probabilities.size() != n)
     throw std::invalid_argument(
         fmt::format("tabletop result: {} probability entries for {} objects", r.probabilities.size(), n));
   if (r.evidence.size() != n + 1)
@@ -55,11 +55,18 @@ void validate_result(const TabletopResult& r) {
     if (r.evidence.ids[Evidence::body(i)] != r.scene.objects[i].id)
       throw std::invalid_argument(fmt::format("tabletop result: evidence body {} is \"{}\", scene object is \"{}\"",
                                               i + 1, r.evidence.ids[Evidence::body(i)], r.scene.objects[i].id));
+    if (r.probabilities.empty()) continue;
     for (double p : {r.probabilities[i].false_prob, r.probabilities[i].hidden_prob})
       if (!(p >= 0.0 && p <= 1.0))
         throw std::invalid_argument(
             fmt::format("tabletop result: object \"{}\": probability {} outside [0, 1]", r.scene.objects[i].id, p));
   }
+}
+
+nlohmann::json id_json(const Scene& scene, const std::string& id) {
+  const int i = scene.find(id);
+  if (i >= 0 && scene.objects[static_cast<std::size_t>(i)].numeric_id) return nlohmann::json::parse(id);
+  return id;
 }
 
 nlohmann::json scene_graph_json(const TabletopResult& r) {
@@ -71,19 +78,23 @@ nlohmann::json scene_graph_json(const TabletopResult& r) {
     const SceneObject& o = r.scene.objects[i];
     const Pose cam = r.scene.camera_pose(o);
     json pose = {{"t", {cam.t.x(), cam.t.y(), cam.t.z()}}, {"q", {cam.q.w(), cam.q.x(), cam.q.y(), cam.q.z()}}};
-    const auto& p = r.probabilities[i];
-    objects.push_back({{"id", o.id},
-                       {"pose", pose},
-                       {"stable", static_cast<bool>(r.evidence.stable[Evidence::body(i)])},
-                       {"false_prob", p.false_prob},
-                       {"hidden_prob", p.hidden_prob},
-                       {"false", decision(p.false_prob)},
-                       {"hidden", decision(p.hidden_prob)}});
+    json entry = {{"id", id_json(r.scene, o.id)},
+                  {"pose", pose},
+                  {"stable", static_cast<bool>(r.evidence.stable[Evidence::body(i)])}};
+    if (!r.probabilities.empty()) {
+      const auto& p = r.probabilities[i];
+      entry["false_prob"] = p.false_prob;
+      entry["hidden_prob"] = p.hidden_prob;
+      entry["false"] = decision(p.false_prob);
+      entry["hidden"] = decision(p.hidden_prob);
+    }
+    objects.push_back(std::move(entry));
   }
   json support = json::array();
-  for (const auto& [u, l] : support_edges(r.evidence)) support.push_back({u, l});
+  for (const auto& [u, l] : support_edges(r.evidence)) support.push_back({id_json(r.scene, u), id_json(r.scene, l)});
   json contact = json::array();
-  for (const auto& [a, b] : unstable_contact_edges(r.evidence)) contact.push_back({a, b});
+  for (const auto& [a, b] : unstable_contact_edges(r.evidence))
+    contact.push_back({id_json(r.scene, a), id_json(r.scene, b)});
   return json{{"objects", objects}, {"support", support}, {"contact", contact}};
 }
 

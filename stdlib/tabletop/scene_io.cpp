@@ -34,7 +34,15 @@ Camera read_camera(const Reader& r, const json& j, const std::string& path) {
 SceneObject read_object(const Reader& r, const json& j, const std::string& path, const Pose& camera_to_table,
                         const SceneOptions& options) {
   SceneObject o;
-  o.id = r.string(r.member(j, path, "id"), Reader::join(path, "id"));
+  const json& id = r.member(j, path, "id");
+  if (id.is_number()) {  // numeric ids are accepted and echoed back as numbers (scene_graph_json)
+    o.id = id.dump();
+    o.numeric_id = true;
+  } else if (id.is_string()) {
+    o.id = id.get<std::string>();
+  } else {
+    r.fail(Reader::join(path, "id"), fmt::format("expected a string or a number, got {}", id.type_name()));
+  }
   if (o.id.empty()) r.fail(Reader::join(path, "id"), "empty id");
   if (o.id == kTableId) r.fail(Reader::join(path, "id"), "id \"table\" is reserved for the table");
   o.model = r.string(r.member(j, path, "model"), Reader::join(path, "model"));

@@ -34,16 +34,16 @@ TEST_CASE("prob weights become log-odds and a conjunction in the head splits the
   const double w = std::log(0.8 / 0.2);
   CHECK(p.clauses[0].weight == Approx(w / 2));
   CHECK(p.clauses[1].weight == Approx(w / 2));
-  CHECK(p.clauses[0].name == "r1_a_b_c1");
-  CHECK(p.clauses[1].name == "r1_a_b_c2");
+  CHECK(p.clauses[0].name == "a_b_8341_c1");
+  CHECK(p.clauses[1].name == "a_b_8341_c2");
   CHECK(p.clauses[2].hard);
-  CHECK(p.clauses[2].name == "r2_c");
+  CHECK(p.clauses[2].name == "c_517d");
   CHECK(p.clauses[3].weight == -1.5);
   // The constant Red stays a constant; x is a variable of type thing.
   const auto& lit = p.clauses[3].literals[1];
   CHECK_FALSE(lit.args[1].is_variable);
   CHECK(lit.args[1].constant == "Red");
-  CHECK(dump(l.ir).find("clause r1_a_b_c1 w=0.6931471805599454: !e(x) v a(x)") != std::string::npos);
+  CHECK(dump(l.ir).find("clause a_b_8341_c1 w=0.6931471805599454: !e(x) v a(x)") != std::string::npos);
 }
 
 TEST_CASE("equivalence gives two clauses; its negation two others") {
@@ -52,8 +52,8 @@ TEST_CASE("equivalence gives two clauses; its negation two others") {
   REQUIRE(l.ok);
   const std::string d = dump(l.ir);
   INFO(d);
-  CHECK(d.find("clause r1_b_c1 hard: !a(x) v b(x)") != std::string::npos);
-  CHECK(d.find("clause r1_b_c2 hard: a(x) v !b(x)") != std::string::npos);
+  CHECK(d.find("clause b_ab6f_c1 hard: !a(x) v b(x)") != std::string::npos);
+  CHECK(d.find("clause b_ab6f_c2 hard: a(x) v !b(x)") != std::string::npos);
   CHECK(d.find(": a(x) v c(x)") != std::string::npos);
   CHECK(d.find(": !a(x) v !c(x)") != std::string::npos);
 }
@@ -97,4 +97,33 @@ TEST_CASE("lowering is deterministic") {
   auto l2 = lower_text(text);
   REQUIRE(l1.ok);
   CHECK(dump(l1.ir) == dump(l2.ir));
+}
+
+TEST_CASE("rule names come from @name or from the content, not from the position") {
+  const std::string body = "prob 0.7: e(x) => a(x).\n@no_c hard a(x) => !c(x).\n";
+  auto l1 = lower_text(std::string(kHeader) + body);
+  REQUIRE(l1.ok);
+  REQUIRE(l1.ir.rules.size() == 2);
+  CHECK(l1.ir.rules[1].name == "no_c");
+  const std::string first = l1.ir.rules[0].name;
+  CHECK(first.rfind("a_", 0) == 0);
+  CHECK(first.size() == std::string("a_").size() + 4);
+  // A weight edit, another layout and an inserted rule before it keep the name.
+  auto l2 = lower_text(std::string(kHeader) + "w 2: e(x) => b(x).\nprob   0.75:  e(x)=>a(x).\n@no_c hard a(x) => !c(x).\n");
+  REQUIRE(l2.ok);
+  CHECK(l2.ir.rules[1].name == first);
+  CHECK(l2.ir.rules[2].name == "no_c");
+  // Another formula over the same predicates gets another hash.
+  auto l3 = lower_text(std::string(kHeader) + "prob 0.7: !e(x) => a(x).\n");
+  REQUIRE(l3.ok);
+  CHECK(l3.ir.rules[0].name != first);
+}
+
+TEST_CASE("a duplicate rule name is an error at the second rule") {
+  auto l = lower_text(std::string(kHeader) + "@same prob 0.7: e(x) => a(x).\n@same hard a(x) => !c(x).\n");
+  CHECK_FALSE(l.ok);
+  CHECK(l.diagnostics.find("test.ksm:7:2: error: duplicate rule name 'same'") != std::string::npos);
+  auto m = lower_text(std::string(kHeader) + "prob 0.7: e(x) => a(x).\nprob 0.8: e(x) => a(x).\n");
+  CHECK_FALSE(m.ok);
+  CHECK(m.diagnostics.find("name one with '@name'") != std::string::npos);
 }

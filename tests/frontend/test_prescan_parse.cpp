@@ -76,7 +76,8 @@ TEST_CASE("syntax errors are worded for people", "[frontend][parse]") {
         std::vector<std::string>{"1:12: expected ';' after declaration, found 'query'"});
   CHECK(parse_only("type t;\nhard p(x)").errors ==
         std::vector<std::string>{"2:10: expected '.' at the end of the rule, found end of file"});
-  CHECK(parse_only("type t; @").errors == std::vector<std::string>{"1:9: unexpected character '@'"});
+  CHECK(parse_only("type t; $").errors == std::vector<std::string>{"1:9: unexpected character '$'"});
+  CHECK(parse_only("type t; @").errors == std::vector<std::string>{"1:10: unexpected end of file in rule name; expected a name"});
   CHECK(parse_only("type t;\n\"abc").errors == std::vector<std::string>{"2:1: unterminated string literal"});
   CHECK(parse_only("/* x").errors == std::vector<std::string>{"1:1: unterminated comment: '/*' without '*/'"});
   // One error per statement, however confused the parser gets.

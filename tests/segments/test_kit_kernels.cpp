@@ -10,7 +10,6 @@
 
 #include "kit_fixture.h"
 #include "runtime/mcmc/rng.h"
-#include "stdlib/segments/kit/kernels.h"
 
 using namespace ksmc::stdlib::segments;
 using namespace ksmc::stdlib::segments::kit;
@@ -34,7 +33,7 @@ ksmc::runtime::mcmc::Snapshot start_state(const std::shared_ptr<const SharedInpu
   Rng rng(9);
   for (int i = 0; i < 400; ++i) {
     const double before = m.log_posterior();
-    const auto p = (i % 3 == 2 ? propose_jitter : propose_birth)(m, rng);
+    const auto p = (i % 3 == 2 ? segments_test::jitter : segments_test::birth)(m, rng);
     if (p.was_declined()) continue;
     if (m.log_posterior() > before) m.accept();
     else m.reject();
@@ -97,7 +96,7 @@ TEST_CASE("BIRTH / DEATH densities are consistent", "[segments][kernels]") {
   for (int c = 0; c < 30; ++c) {
     const auto snap = m.snapshot();
     // BIRTH: M -> M' adding s; DEATH on M' choosing s must report (bwd, fwd) swapped.
-    const Proposal b = propose_birth(m, rng);
+    const Proposal b = segments_test::birth(m, rng);
     if (b.was_declined()) continue;
     const auto after = m.snapshot();
     const std::size_t born = m.scene().size() - 1;  // appended last
@@ -108,7 +107,7 @@ TEST_CASE("BIRTH / DEATH densities are consistent", "[segments][kernels]") {
     bool found = false;
     for (int t = 0; t < 20000 && !found; ++t) {
       r.restore(after);
-      const Proposal d = propose_death(r, rr);
+      const Proposal d = segments_test::death(r, rr);
       const bool removed_s = std::none_of(r.scene().lines().begin(), r.scene().lines().end(),
                                           [&](const Line& l) { return l.seg == s; });
       if (removed_s) {
@@ -126,7 +125,7 @@ TEST_CASE("BIRTH / DEATH densities are consistent", "[segments][kernels]") {
 }
 
 TEST_CASE("SPLIT / MERGE densities are consistent", "[segments][kernels]") {
-  check_pair(propose_split, propose_merge, 10);
+  check_pair(segments_test::split, segments_test::merge, 10);
 }
 
 TEST_CASE("JITTER is its own reverse with a symmetric density", "[segments][kernels]") {
@@ -136,7 +135,7 @@ TEST_CASE("JITTER is its own reverse with a symmetric density", "[segments][kern
   Rng rng(8);
   for (int i = 0; i < 200; ++i) {
     const auto ids_before = m.snapshot();
-    const Proposal p = propose_jitter(m, rng);
+    const Proposal p = segments_test::jitter(m, rng);
     REQUIRE_FALSE(p.was_declined());
     CHECK(p.log_q_fwd == p.log_q_bwd);
     CHECK(m.scene().size() == static_cast<std::size_t>(ids_before.at("lines").size()));
@@ -180,9 +179,9 @@ void check_discrete_honesty(Fn move) {
 }  // namespace
 
 TEST_CASE("DEATH draws lines with the probability it reports", "[segments][kernels]") {
-  check_discrete_honesty(propose_death);
+  check_discrete_honesty(segments_test::death);
 }
 
 TEST_CASE("MERGE draws pairs with the probability it reports", "[segments][kernels]") {
-  check_discrete_honesty(propose_merge);
+  check_discrete_honesty(segments_test::merge);
 }

@@ -5,10 +5,12 @@
 #include <random>
 
 #include "stdlib/tabletop/evidence.h"
-#include "stdlib/tabletop/evidence_db.h"
+#include "tests/tabletop/evidence_atoms.h"
 #include "tests/tabletop/tabletop_test_util.h"
 
 using namespace ksmc::stdlib::tabletop;
+using ksmc::tests::tabletop::atoms;
+using ksmc::tests::tabletop::GroundAtom;
 using ksmc::tests::tabletop::object;
 using ksmc::tests::tabletop::rot;
 using Eigen::Vector3d;
@@ -32,7 +34,7 @@ Scene stack_scene() {
 
 TEST_CASE("evidence atoms of a small stack with a hovering box", "[evidence]") {
   const Evidence ev = extract_evidence(stack_scene());
-  const auto atoms = ev.atoms();
+  const auto got = atoms(ev);
   CHECK(ev.ids == std::vector<std::string>{"table", "a", "b", "c"});
   const std::vector<GroundAtom> expected = {
       {"table", {"table"}},          {"stable", {"table"}},         {"stable", {"a"}},
@@ -42,8 +44,8 @@ TEST_CASE("evidence atoms of a small stack with a hovering box", "[evidence]") {
       {"higher", {"b", "a"}},        {"higher", {"c", "table"}},    {"higher", {"c", "a"}},
       {"higher", {"c", "b"}},
   };
-  CHECK(atoms == expected);
-  CHECK_FALSE(has(atoms, "hover", {"a"}));
+  CHECK(got == expected);
+  CHECK_FALSE(has(got, "hover", {"a"}));
 }
 
 TEST_CASE("incremental re-extraction equals full extraction", "[evidence]") {
@@ -57,42 +59,16 @@ TEST_CASE("incremental re-extraction equals full extraction", "[evidence]") {
   Evidence ev = extract_evidence(s);
   int changed = 0;
   for (int step = 0; step < 40; ++step) {
-    const auto before = ev.atoms();
+    const auto before = atoms(ev);
     const auto k = static_cast<std::size_t>(step % 8);
     s.objects[k].pose.t += Vector3d(0.05 * u(rng), 0.05 * u(rng), 0.02 * u(rng));
     s.objects[k].pose.q = (Eigen::Quaterniond(rot(5 * u(rng), Vector3d(u(rng), u(rng), u(rng) + 2))) *
                            s.objects[k].pose.q).normalized();
     update_evidence(ev, s, k);
     const Evidence full = extract_evidence(s);
-    REQUIRE(ev.atoms() == full.atoms());
-    if (ev.atoms() != before) ++changed;
+    REQUIRE(atoms(ev) == atoms(full));
+    if (atoms(ev) != before) ++changed;
   }
   // The walk must actually change relations for the comparison to mean something.
   CHECK(changed >= 15);
-}
-
-TEST_CASE("evidence as closed-world .db text", "[evidence]") {
-  Scene s = stack_scene();
-  const Evidence ev = extract_evidence(s);
-  const std::string db = evidence_db(ev);
-  // 3 unary predicates × 4 bodies + 3 binary predicates × 16 pairs, plus the comment line.
-  CHECK(std::count(db.begin(), db.end(), '\n') == 1 + 3 * 4 + 3 * 16);
-  CHECK(db.find("\ntable(table)\n") != std::string::npos);
-  CHECK(db.find("\n!table(a)\n") != std::string::npos);
-  CHECK(db.find("\nhover(c)\n") != std::string::npos);
-  CHECK(db.find("\n!hover(b)\n") != std::string::npos);
-  CHECK(db.find("\ncontact(b, a)\n") != std::string::npos);
-  CHECK(db.find("\n!contact(a, a)\n") != std::string::npos);
-  CHECK(db.find("\nhigher(c, b)\n") != std::string::npos);
-  CHECK(db.find("\n!higher(b, c)\n") != std::string::npos);
-  // Every true atom of atoms() appears positively, and nothing else does.
-  std::size_t positives = 0;
-  std::size_t pos = 0;
-  while ((pos = db.find('\n', pos)) != std::string::npos) {
-    ++pos;
-    if (pos < db.size() && db[pos] != '!' && db[pos] != '/') ++positives;
-  }
-  CHECK(positives == ev.atoms().size());
-  s.objects[0].id = "a b";
-  CHECK_THROWS_WITH(evidence_db(extract_evidence(s)), Catch::Contains("id \"a b\" is not a valid .db constant"));
 }

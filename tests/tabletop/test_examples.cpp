@@ -9,8 +9,11 @@
 #include "stdlib/tabletop/likelihood.h"
 #include "stdlib/tabletop/result.h"
 #include "stdlib/tabletop/scene_io.h"
+#include "tests/tabletop/evidence_atoms.h"
 
 using namespace ksmc::stdlib::tabletop;
+using ksmc::tests::tabletop::atoms;
+using ksmc::tests::tabletop::GroundAtom;
 
 namespace {
 
@@ -44,9 +47,9 @@ std::vector<GroundAtom> atoms_of(const Intended& in) {
 std::vector<GroundAtom> extracted(const std::string& file) {
   const SceneLoad load = load_scene(std::filesystem::path(KSMC_SOURCE_DIR) / "examples/tabletop" / file);
   REQUIRE(load.warnings.empty());
-  auto atoms = extract_evidence(load.scene).atoms();
-  std::sort(atoms.begin(), atoms.end());
-  return atoms;
+  auto got = atoms(extract_evidence(load.scene));
+  std::sort(got.begin(), got.end());
+  return got;
 }
 
 }  // namespace

@@ -219,3 +219,19 @@ TEST_CASE("huge values are rejected or normalised without overflow", "[scene]") 
   d["camera"]["cx"] = -1e300;
   CHECK(error_of(d) == "scene.json: camera.cx: value -1e+300 out of range (|v| > 1e7)");
 }
+
+TEST_CASE("numeric ids are accepted; a duplicate across types is refused", "[scene]") {
+  json d = valid_doc();
+  d["objects"][0]["id"] = 7;
+  d["objects"][1]["id"] = 2.5;
+  const SceneLoad load = parse_scene(d, "scene.json", "/data");
+  REQUIRE(load.scene.objects.size() == 2);
+  CHECK(load.scene.objects[0].id == "7");
+  CHECK(load.scene.objects[0].numeric_id);
+  CHECK(load.scene.objects[1].id == "2.5");
+  CHECK(load.scene.objects[1].numeric_id);
+  d["objects"][1]["id"] = "7";  // the same constant name as the number 7
+  CHECK(error_of(d) == "scene.json: objects[1].id: duplicate id \"7\"");
+  d["objects"][1]["id"] = json::array({1});
+  CHECK(error_of(d) == "scene.json: objects[1].id: expected a string or a number, got array");
+}

@@ -16,7 +16,6 @@
 #include "stdlib/tabletop/scene_io.h"
 #include "stdlib/tabletop/sim/generator.h"
 #include "stdlib/tabletop/sim/scene_writer.h"
-#include "tests/tabletop_kit/config_fixture.h"
 #include "tests/tabletop_kit/e2e_support.h"
 
 using namespace ksmc::tests::tabletop_kit;
@@ -52,16 +51,16 @@ std::string describe(const tt::Evidence& ev, std::size_t b) {
 int main(int argc, char** argv) {
   const std::uint64_t iters = argc > 1 ? std::strtoull(argv[1], nullptr, 10) : 300;
   const int n_scenes = argc > 2 ? std::atoi(argv[2]) : 50;
-  kit::KitConfig config = kit::read_kit_config(tabletop_config());
-  if (argc > 3) config.prior_quantity = std::string(argv[3]) == "log_z" ? kit::PriorQuantity::log_z : kit::PriorQuantity::map;
-  if (argc > 4)
-    for (auto& k : config.kernels) k.current_competes = std::atoi(argv[4]) != 0;
+  kit::KitOptions options;
+  if (argc > 3) options.prior_quantity = std::string(argv[3]) == "log_z" ? kit::PriorQuantity::log_z : kit::PriorQuantity::map;
+  if (argc > 4) options.current_competes = std::atoi(argv[4]) != 0;
+  static blk::Binding binding = ksm_binding();
   if (argc > 6)  // sigma_t [mm], sigma_r [deg]
-    for (auto& k : config.kernels) {
-      k.sigma_t = 1e-3 * std::atof(argv[5]);
-      k.sigma_r = std::atof(argv[6]) / 57.29577951308232;
-    }
-  const auto cfg = std::make_shared<const kit::KitConfig>(config);
+    for (auto& k : binding.kernels)
+      for (auto& src : k.sources) {
+        src.sigma_t = 1e-3 * std::atof(argv[5]);
+        src.sigma_r = std::atof(argv[6]) / 57.29577951308232;
+      }
   sim::GeneratorOptions opt;
   Score total;
   struct PoseError {
@@ -74,8 +73,8 @@ int main(int argc, char** argv) {
     auto load = tt::parse_scene(nlohmann::json::parse(sim::scene_json(g)), "scene", ".");
     const auto scene = std::make_shared<const tt::Scene>(std::move(load.scene));
     const auto truth = nlohmann::json::parse(sim::truth_json(g));
-    const tt::TabletopResult r0 = run_kit(cfg, scene, 0, 1 + static_cast<std::uint64_t>(i));
-    const tt::TabletopResult r = iters == 0 ? r0 : run_kit(cfg, scene, iters, 1 + static_cast<std::uint64_t>(i));
+    const tt::TabletopResult r0 = run_kit(binding, scene, 0, 1 + static_cast<std::uint64_t>(i), options);
+    const tt::TabletopResult r = iters == 0 ? r0 : run_kit(binding, scene, iters, 1 + static_cast<std::uint64_t>(i), options);
     score(r, truth, total);
     for (const auto& o : g.objects) {  // pose errors of real objects, input and reported state
       if (o.false_kind != sim::FalseKind::none) continue;

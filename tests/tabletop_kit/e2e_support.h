@@ -14,7 +14,7 @@
 #include "runtime/mcmc/engine.h"
 #include "stdlib/tabletop/kit/domain_spec.h"
 #include "stdlib/tabletop/result.h"
-#include "tests/tabletop_kit/binding.h"
+#include "tests/tabletop_kit/binding_fixture.h"
 
 namespace ksmc::tests::tabletop_kit {
 
@@ -22,9 +22,9 @@ namespace kit = ksmc::stdlib::tabletop::kit;
 namespace tt = ksmc::stdlib::tabletop;
 
 // Runs one chain and returns the result at the best state.
-inline tt::TabletopResult run_kit(std::shared_ptr<const kit::KitConfig> cfg, std::shared_ptr<const tt::Scene> scene,
-                                  std::uint64_t iterations, std::uint64_t seed) {
-  kit::KitSetup k = kit::make_setup(cfg, tabletop_binding(), scene);
+inline tt::TabletopResult run_kit(const blk::Binding& binding, std::shared_ptr<const tt::Scene> scene,
+                                  std::uint64_t iterations, std::uint64_t seed, kit::KitOptions options = {}) {
+  kit::KitSetup k = kit::make_setup(binding, scene, options);
   runtime::mcmc::Engine engine(k.setup.model_factory, k.setup.kernels, k.setup.schedule);
   runtime::mcmc::EngineConfig ec;
   ec.iterations = iterations;

@@ -10,7 +10,6 @@
 #include "stdlib/tabletop/sim/generator.h"
 #include "stdlib/tabletop/sim/scene_writer.h"
 #include "tests/support/shared_data.h"
-#include "tests/tabletop_kit/config_fixture.h"
 #include "tests/tabletop_kit/e2e_support.h"
 
 using namespace ksmc::tests::tabletop_kit;
@@ -44,20 +43,10 @@ const std::vector<Generated>& scenes() {
   return all;
 }
 
-// The sampler settings the Results tables compare (docs/tabletop_kit.md).
-struct Sampler {
-  kit::PriorQuantity prior = kit::PriorQuantity::map;
-  bool current_competes = true;
-};
-
-Score run_all(const Tolerances& tol, std::uint64_t iters, Sampler sampler = {}) {
-  kit::KitConfig config = kit::read_kit_config(tabletop_config(tol));
-  config.prior_quantity = sampler.prior;
-  for (auto& k : config.kernels) k.current_competes = sampler.current_competes;
-  const auto cfg = std::make_shared<const kit::KitConfig>(std::move(config));
+Score run_all(const blk::Binding& binding, std::uint64_t iters, kit::KitOptions options = {}) {
   Score s;
   for (std::size_t i = 0; i < scenes().size(); ++i)
-    score(run_kit(cfg, scenes()[i].scene, iters, 1 + i), scenes()[i].truth, s);
+    score(run_kit(binding, scenes()[i].scene, iters, 1 + i, options), scenes()[i].truth, s);
   return s;
 }
 
@@ -77,12 +66,15 @@ TEST_CASE("50 generated scenes: false / hidden / support accuracy") {
   REQUIRE(n_false > 10);
   REQUIRE(n_hidden > 10);
 
-  const Score seed = run_all(seed_tolerances(), iterations(), {kit::PriorQuantity::log_z, false});
+  kit::KitOptions seed_sampler;
+  seed_sampler.prior_quantity = kit::PriorQuantity::log_z;
+  seed_sampler.current_competes = false;
+  const Score seed = run_all(seed_binding(), iterations(), seed_sampler);
   std::cout << "seed values (3 deg, 4 mm, 4 mm, plain Gaussian), log Z prior, best new candidate always, best state:\n"
             << table(seed);
-  const Score initial = run_all(Tolerances{}, 0);
+  const Score initial = run_all(ksm_binding(), 0);
   std::cout << "domains/tabletop.ksm, input poses (0 iterations):\n" << table(initial);
-  const Score ksm = run_all(Tolerances{}, iterations());
+  const Score ksm = run_all(ksm_binding(), iterations());
   std::cout << "domains/tabletop.ksm (MAP-world prior, current pose competes), best state:\n" << table(ksm);
 
   // Targets: false F1 >= 0.95, hidden F1 >= 0.9. Asserted: what the kit reaches on these 50
@@ -106,10 +98,9 @@ TEST_CASE("HOPE video frame: nothing false or hidden, everything on the table") 
   if (!ksmc::tests::have_shared(rel)) return;
   const auto hope = tt::import_hope_file(ksmc::tests::shared_dir() / rel);
   const auto scene = std::make_shared<const tt::Scene>(hope.scene);
-  for (const auto& [label, tol] : {std::pair<const char*, Tolerances>{"seed values", seed_tolerances()},
-                                   std::pair<const char*, Tolerances>{"domains/tabletop.ksm", Tolerances{}}}) {
-    const auto cfg = std::make_shared<const kit::KitConfig>(kit::read_kit_config(tabletop_config(tol)));
-    const tt::TabletopResult r = run_kit(cfg, scene, 500, 1);
+  for (const auto& [label, binding] : {std::pair<const char*, const blk::Binding*>{"seed values", &seed_binding()},
+                                       std::pair<const char*, const blk::Binding*>{"domains/tabletop.ksm", &ksm_binding()}}) {
+    const tt::TabletopResult r = run_kit(*binding, scene, 500, 1);
     const auto sup = tt::support_edges(r.evidence);
     int reported_false = 0, reported_hidden = 0, on_table = 0;
     for (std::size_t i = 0; i < r.scene.objects.size(); ++i) {

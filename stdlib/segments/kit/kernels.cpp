@@ -28,42 +28,40 @@ Vec2 gaussian2(mcmc::Rng& rng, double sigma) {
 
 }  // namespace
 
-mcmc::Proposal propose_birth(SegmentsModel& m, mcmc::Rng& rng) {
-  const SharedInput& sh = m.shared();
-  if (sh.candidates.empty() || m.scene().size() >= sh.max_lines) return mcmc::Proposal::declined();
-  const BirthParams& bp = sh.settings.birth;
-  const auto probs = birth_probabilities(m.scene(), sh.candidates, bp);
-  const Candidate& c = sh.candidates[draw(probs, rng)];
+mcmc::Proposal propose_birth(SegmentsModel& m, const KernelData& k, mcmc::Rng& rng) {
+  const std::vector<Candidate>& cands = *k.candidates;
+  if (cands.empty() || m.scene().size() >= m.shared().max_lines) return mcmc::Proposal::declined();
+  const BirthParams& bp = k.params.birth;
+  const auto probs = birth_probabilities(m.scene(), cands, bp);
+  const Candidate& c = cands[draw(probs, rng)];
   const Vec2 a = c.seg.a + gaussian2(rng, bp.jitter);
   const Vec2 b = c.seg.b + gaussian2(rng, bp.jitter);
   const Segment s = canonical(a, b);
-  const double fwd = birth_log_density(s, probs, sh.candidates, bp);
+  const double fwd = birth_log_density(s, probs, cands, bp);
   const Segment add[1] = {s};
   const auto idx = m.change({}, add);
-  const auto dp = death_probabilities(m.scene(), sh.settings.death);
+  const auto dp = death_probabilities(m.scene(), k.params.death);
   return mcmc::Proposal::made(fwd, std::log(dp[idx.at(0)]));
 }
 
-mcmc::Proposal propose_death(SegmentsModel& m, mcmc::Rng& rng) {
-  const SharedInput& sh = m.shared();
+mcmc::Proposal propose_death(SegmentsModel& m, const KernelData& k, mcmc::Rng& rng) {
   if (m.scene().size() == 0) return mcmc::Proposal::declined();
-  const auto dp = death_probabilities(m.scene(), sh.settings.death);
-  const std::size_t k = draw(dp, rng);
-  const Segment s = m.scene().lines()[k].seg;
-  const double fwd = std::log(dp[k]);
-  const std::size_t rm[1] = {k};
+  const auto dp = death_probabilities(m.scene(), k.params.death);
+  const std::size_t i = draw(dp, rng);
+  const Segment s = m.scene().lines()[i].seg;
+  const double fwd = std::log(dp[i]);
+  const std::size_t rm[1] = {i};
   m.change(rm, {});
-  const auto probs = birth_probabilities(m.scene(), sh.candidates, sh.settings.birth);
-  return mcmc::Proposal::made(fwd, birth_log_density(s, probs, sh.candidates, sh.settings.birth));
+  const auto probs = birth_probabilities(m.scene(), *k.candidates, k.params.birth);
+  return mcmc::Proposal::made(fwd, birth_log_density(s, probs, *k.candidates, k.params.birth));
 }
 
-mcmc::Proposal propose_split(SegmentsModel& m, mcmc::Rng& rng) {
-  const SharedInput& sh = m.shared();
+mcmc::Proposal propose_split(SegmentsModel& m, const KernelData& k, mcmc::Rng& rng) {
   const std::size_t n = m.scene().size();
-  if (n == 0 || n >= sh.max_lines) return mcmc::Proposal::declined();
-  const SplitParams& sp = sh.settings.split;
-  const std::size_t k = rng.uniform_int(n);
-  const Segment s = m.scene().lines()[k].seg;
+  if (n == 0 || n >= m.shared().max_lines) return mcmc::Proposal::declined();
+  const SplitParams& sp = k.params.split;
+  const std::size_t i = rng.uniform_int(n);
+  const Segment s = m.scene().lines()[i].seg;
   const auto options = split_options(m.scene().points(), s, sp);
   const SplitOption& o = options[draw([&] {
     std::vector<double> p;
@@ -78,14 +76,13 @@ mcmc::Proposal propose_split(SegmentsModel& m, mcmc::Rng& rng) {
   const Merged back = merge_of(s1, s2);
   if (!(back.seg == s && back.p1 == p1 && back.p2 == p2)) return mcmc::Proposal::declined();
   const double fwd = -std::log(static_cast<double>(n)) + split_log_density(s, p1, p2, options, sp);
-  const std::size_t rm[1] = {k};
+  const std::size_t rm[1] = {i};
   const Segment add[2] = {s1, s2};
   const auto idx = m.change(rm, add);
-  return mcmc::Proposal::made(fwd, merge_pair_log_prob(m.scene().lines(), idx[0], idx[1], sh.settings.merge));
+  return mcmc::Proposal::made(fwd, merge_pair_log_prob(m.scene().lines(), idx[0], idx[1], k.params.merge));
 }
 
-mcmc::Proposal propose_merge(SegmentsModel& m, mcmc::Rng& rng) {
-  const SharedInput& sh = m.shared();
+mcmc::Proposal propose_merge(SegmentsModel& m, const KernelData& kd, mcmc::Rng& rng) {
   const std::size_t n = m.scene().size();
   if (n < 2) return mcmc::Proposal::declined();
   const auto& lines = m.scene().lines();
@@ -93,26 +90,25 @@ mcmc::Proposal propose_merge(SegmentsModel& m, mcmc::Rng& rng) {
   std::vector<double> w(n, 0.0);
   double total = 0.0;
   for (std::size_t k = 0; k < n; ++k)
-    if (k != i) total += w[k] = partner_weight(lines[i].seg, lines[k].seg, sh.settings.merge);
+    if (k != i) total += w[k] = partner_weight(lines[i].seg, lines[k].seg, kd.params.merge);
   for (double& x : w) x /= total;
   const std::size_t j = draw(w, rng);
   if (j == i) return mcmc::Proposal::declined();  // rounding only: w[i] = 0
-  const double fwd = merge_pair_log_prob(lines, i, j, sh.settings.merge);
+  const double fwd = merge_pair_log_prob(lines, i, j, kd.params.merge);
   const Merged mg = merge_of(lines[i].seg, lines[j].seg);
   const std::size_t rm[2] = {i, j};
   const Segment add[1] = {mg.seg};
   m.change(rm, add);
-  const auto options = split_options(m.scene().points(), mg.seg, sh.settings.split);
+  const auto options = split_options(m.scene().points(), mg.seg, kd.params.split);
   const double bwd = -std::log(static_cast<double>(n - 1)) +
-                     split_log_density(mg.seg, mg.p1, mg.p2, options, sh.settings.split);
+                     split_log_density(mg.seg, mg.p1, mg.p2, options, kd.params.split);
   return mcmc::Proposal::made(fwd, bwd);
 }
 
-mcmc::Proposal propose_jitter(SegmentsModel& m, mcmc::Rng& rng) {
-  const SharedInput& sh = m.shared();
+mcmc::Proposal propose_jitter(SegmentsModel& m, const KernelData& kd, mcmc::Rng& rng) {
   const std::size_t n = m.scene().size();
   if (n == 0) return mcmc::Proposal::declined();
-  const JitterParams& jp = sh.settings.jitter;
+  const JitterParams& jp = kd.params.jitter;
   const std::size_t k = rng.uniform_int(n);
   const Line line = m.scene().lines()[k];
   Segment moved;
@@ -144,12 +140,12 @@ mcmc::Proposal propose_jitter(SegmentsModel& m, mcmc::Rng& rng) {
 }
 
 mcmc::Proposal SegmentKernel::propose_typed(SegmentsModel& model, mcmc::Rng& rng) const {
-  switch (kind_) {
-    case KernelKind::Birth: return propose_birth(model, rng);
-    case KernelKind::Death: return propose_death(model, rng);
-    case KernelKind::Split: return propose_split(model, rng);
-    case KernelKind::Merge: return propose_merge(model, rng);
-    case KernelKind::Jitter: return propose_jitter(model, rng);
+  switch (data_.params.move) {
+    case blocks::Move::birth: return propose_birth(model, data_, rng);
+    case blocks::Move::death: return propose_death(model, data_, rng);
+    case blocks::Move::split: return propose_split(model, data_, rng);
+    case blocks::Move::merge: return propose_merge(model, data_, rng);
+    case blocks::Move::jitter: return propose_jitter(model, data_, rng);
   }
   return mcmc::Proposal::declined();
 }

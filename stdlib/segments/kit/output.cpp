@@ -18,12 +18,12 @@ double r6(double v) { return std::round(v * 1e6) / 1e6; }
 
 }  // namespace
 
-nlohmann::json result_json(SegmentsModel& best, const runtime::mcmc::RunResult& run, const std::string& input) {
+nlohmann::ordered_json result_json(SegmentsModel& best, const runtime::mcmc::RunResult& run, const std::string& input) {
   const Scene& scene = best.scene();
   const auto& lines = scene.lines();
   const std::size_t n = lines.size();
   const SharedInput& sh = best.shared();
-  const double explain = sh.settings.death.explain;
+  const double explain = sh.explain;
   // Output order: by id.
   std::vector<std::size_t> order(n);
   for (std::size_t i = 0; i < n; ++i) order[i] = i;
@@ -40,12 +40,12 @@ nlohmann::json result_json(SegmentsModel& best, const runtime::mcmc::RunResult& 
     }
   }
   const auto outcome = best.outcome();
-  const auto& program = best.semantics().program();
-  nlohmann::json segs = nlohmann::json::array();
+  const auto& program = best.semantics().core().program();
+  nlohmann::ordered_json segs = nlohmann::ordered_json::array();
   for (const std::size_t i : order) {
     const Line& l = lines[i];
-    nlohmann::json probs = nlohmann::json::object();
-    for (const std::int32_t q : best.semantics().query_predicates()) {
+    nlohmann::ordered_json probs = nlohmann::ordered_json::object();
+    for (const std::int32_t q : best.semantics().core().queries()) {
       const auto& pred = program.predicates[static_cast<std::size_t>(q)];
       if (pred.arg_types.size() == 1) probs[pred.name] = r6(outcome->values[static_cast<std::size_t>(q)][i]);
     }
@@ -57,11 +57,11 @@ nlohmann::json result_json(SegmentsModel& best, const runtime::mcmc::RunResult& 
                     {"probabilities", probs}});
   }
   // Binary predicates: query marginals > 0.5 and true evidence, over pairs a < b (by id).
-  nlohmann::json relations = nlohmann::json::object();
+  nlohmann::ordered_json relations = nlohmann::ordered_json::object();
   for (std::size_t p = 0; p < program.predicates.size(); ++p) {
     const auto& pred = program.predicates[p];
     if (pred.arg_types.size() != 2) continue;
-    nlohmann::json list = nlohmann::json::array();
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
     for (std::size_t x = 0; x < n; ++x)
       for (std::size_t y = x + 1; y < n; ++y) {
         const std::size_t a = order[x], b = order[y];
@@ -72,7 +72,7 @@ nlohmann::json result_json(SegmentsModel& best, const runtime::mcmc::RunResult& 
   }
   const PriorParts& pp = best.prior_parts();
   const double secs = run.seconds;
-  nlohmann::json metrics = {
+  nlohmann::ordered_json metrics = {
       {"iterations", run.iterations},
       {"seconds", secs},
       {"iterations_per_second", secs > 0.0 ? static_cast<double>(run.iterations) / secs : 0.0},
@@ -88,14 +88,18 @@ nlohmann::json result_json(SegmentsModel& best, const runtime::mcmc::RunResult& 
       {"explained_points", explained},
       {"explained_fraction", scene.points().empty() ? 0.0 : static_cast<double>(explained) / static_cast<double>(scene.points().size())},
       {"mean_point_residual", explained ? residual / static_cast<double>(explained) : 0.0},
-      {"candidates", sh.candidates.size()},
+      {"candidates", sh.candidates},
       {"mln_method", outcome->method},
   };
-  return {{"domain", "segments"}, {"input", input}, {"segments", std::move(segs)},
-          {"relations", std::move(relations)}, {"metrics", std::move(metrics)}};
+  return {{"domain", sh.binding->domain},
+          {"input", input},
+          {"segments", std::move(segs)},
+          {"relations", std::move(relations)},
+          {"queries", best.semantics().queries_json(*outcome, best.constant_names())},
+          {"metrics", std::move(metrics)}};
 }
 
-std::vector<unsigned char> overlay_png(const SegmentsModel& best, const nlohmann::json& result) {
+std::vector<unsigned char> overlay_png(const SegmentsModel& best, const nlohmann::ordered_json& result) {
   const auto& pts = best.scene().points();
   double x0 = pts[0].x, x1 = pts[0].x, y0 = pts[0].y, y1 = pts[0].y;
   for (const Vec2& p : pts) {
@@ -118,8 +122,14 @@ std::vector<unsigned char> overlay_png(const SegmentsModel& best, const nlohmann
   const cv::Scalar palette[6] = {{200, 60, 30}, {40, 140, 40}, {30, 60, 200}, {160, 40, 160}, {20, 140, 180}, {90, 90, 20}};
   std::size_t c = 0;
   for (const auto& [id, s] : by_id) cv::line(img, px(s.a), px(s.b), palette[c++ % 6], 2, cv::LINE_AA);
-  if (result.contains("relations") && result["relations"].contains("Corner"))
-    for (const auto& pair : result["relations"]["Corner"]["pairs"]) {
+  // Binary query relations: a ring at the meeting point of each pair, a colour per predicate.
+  const cv::Scalar rings[4] = {{0, 0, 230}, {0, 170, 0}, {230, 0, 0}, {0, 140, 230}};
+  std::size_t r = 0;
+  for (const auto& item : result.at("relations").items()) {
+    const auto& rel = item.value();
+    if (!rel.at("query").get<bool>()) continue;
+    const cv::Scalar ring = rings[r++ % 4];
+    for (const auto& pair : rel.at("pairs")) {
       const Segment& s = by_id.at(pair[0].get<std::uint64_t>());
       const Segment& t = by_id.at(pair[1].get<std::uint64_t>());
       const Vec2 es[2] = {s.a, s.b}, ft[2] = {t.a, t.b};
@@ -131,8 +141,9 @@ std::vector<unsigned char> overlay_png(const SegmentsModel& best, const nlohmann
             bd = dist(e, f);
             best_p = 0.5 * (e + f);
           }
-      cv::circle(img, px(best_p), 7, cv::Scalar(0, 0, 230), 2, cv::LINE_AA);
+      cv::circle(img, px(best_p), 7, ring, 2, cv::LINE_AA);
     }
+  }
   std::vector<unsigned char> png;
   if (!cv::imencode(".png", img, png)) throw std::runtime_error("overlay.png: PNG encoding failed");
   return png;

@@ -1,6 +1,8 @@
 // The segments kit's result files: segments.json (the fitted segments with endpoints and
-// support, the Markov logic query marginals, run metrics) and overlay.png (points, segments,
-// corners marked; OpenCV).
+// support, their unary query marginals, the pairs of binary relations, "queries" — every
+// ground query atom's marginal, runtime::domain::Semantics::queries_json — and run metrics)
+// and overlay.png (points, segments, the meeting points of pairs in a binary query relation,
+// one colour per predicate; OpenCV).
 #pragma once
 
 #include <string>
@@ -13,8 +15,8 @@
 
 namespace ksmc::stdlib::segments::kit {
 
-nlohmann::json result_json(SegmentsModel& best, const runtime::mcmc::RunResult& run, const std::string& input);
+nlohmann::ordered_json result_json(SegmentsModel& best, const runtime::mcmc::RunResult& run, const std::string& input);
 // PNG bytes of the overlay.
-std::vector<unsigned char> overlay_png(const SegmentsModel& best, const nlohmann::json& result);
+std::vector<unsigned char> overlay_png(const SegmentsModel& best, const nlohmann::ordered_json& result);
 
 }  // namespace ksmc::stdlib::segments::kit

@@ -5,26 +5,53 @@
 
 namespace ksmc::stdlib::segments::kit {
 
+namespace dom = runtime::domain;
+
+namespace {
+
+dom::SemanticOptions semantic_options(const ModelParams& p) {
+  dom::SemanticOptions o;
+  o.log_z = p.mln_prior;
+  o.mcsat_samples = 1000;
+  o.mcsat_burn_in = 50;
+  return o;
+}
+
+}  // namespace
+
 SegmentsModel::SegmentsModel(std::shared_ptr<const SharedInput> shared)
     : shared_(std::move(shared)),
-      scene_(shared_->points, shared_->settings.likelihood),
-      semantics_(shared_->settings, shared_->binding) {
+      scene_(shared_->points, shared_->params.likelihood),
+      view_(scene_),
+      semantics_(*shared_->binding, semantic_options(shared_->params)) {
   prior_ = compute_prior(outcome_);
 }
 
-PriorParts SegmentsModel::compute_prior(std::shared_ptr<const MlnOutcome>& outcome) {
-  const SegmentsSettings& s = shared_->settings;
+PriorParts SegmentsModel::compute_prior(std::shared_ptr<const dom::Outcome>& outcome) {
   const auto& lines = scene_.lines();
+  const std::size_t n = lines.size();
+  outcome = semantics_.evaluate(view_, n);
   PriorParts p;
-  if (s.complexity) {
-    double len = 0.0;
-    for (const Line& l : lines) len += l.seg.length();
-    p.complexity = -s.per_segment * static_cast<double>(lines.size()) - s.per_metre * len;
+  for (const blocks::Prior& prior : shared_->params.priors) {
+    if (const auto* c = std::get_if<blocks::Complexity>(&prior)) {
+      double len = 0.0;
+      for (const Line& l : lines) len += l.seg.length();
+      p.complexity += -c->per_segment * static_cast<double>(n) - c->per_metre * len;
+    } else if (std::holds_alternative<blocks::MlnPrior>(prior)) {
+      const double base = semantics_.empty_evidence(n)->log_z;
+      p.mln += outcome->log_z - (std::isfinite(base) ? base : 0.0);
+    }
   }
-  outcome = semantics_.evaluate(lines);
-  if (s.mln_prior) p.mln = outcome->log_z - semantics_.baseline_log_z(lines.size());
-  if (std::isfinite(outcome->log_z)) p.semantic = semantics_.semantic_terms(lines, *outcome);
+  if (outcome->possible) p.semantic = semantics_.conditional_priors(view_, *outcome);
   return p;
+}
+
+std::vector<std::string> SegmentsModel::constant_names() const {
+  const auto& core = semantics_.core();
+  const std::string& type = core.program().types[static_cast<std::size_t>(core.constant_type())];
+  std::vector<std::string> names;
+  for (const Line& l : scene_.lines()) names.push_back(type + std::to_string(l.id));
+  return names;
 }
 
 std::vector<std::size_t> SegmentsModel::change(std::span<const std::size_t> remove, std::span<const Segment> add,
@@ -69,7 +96,7 @@ void SegmentsModel::restore(const runtime::mcmc::Snapshot& state) {
 }
 
 double SegmentsModel::recompute_log_posterior() {
-  std::shared_ptr<const MlnOutcome> o;
+  std::shared_ptr<const dom::Outcome> o;
   return scene_.recompute_log_likelihood() + compute_prior(o).total();
 }
 

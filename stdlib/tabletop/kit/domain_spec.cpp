@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <opencv2/imgcodecs.hpp>
 
+#include "runtime/domain/kernels.h"
 #include "runtime/mcmc/engine.h"
 #include "stdlib/tabletop/graph_dot.h"
 #include "stdlib/tabletop/hope_import.h"
@@ -17,6 +18,7 @@
 namespace ksmc::stdlib::tabletop::kit {
 
 namespace cli = ksmc::runtime::cli;
+namespace rd = ksmc::runtime::domain;
 namespace rm = ksmc::runtime::mcmc;
 
 Scene load_input(const std::filesystem::path& path, const std::string& format, std::vector<std::string>& warnings) {
@@ -33,14 +35,57 @@ Scene load_input(const std::filesystem::path& path, const std::string& format, s
   throw cli::UsageError(fmt::format("--input-format: expected 'scene' or 'hope', got '{}'", format));
 }
 
+void check_binding(const blocks::Binding& b) {
+  const std::string where = b.source.empty() ? std::string("tabletop kit") : b.source;
+  if (!b.mln.program) throw rd::ConfigError(where + ": incomplete Markov logic binding");
+  const auto& program = b.mln.program();
+  if (b.constant_type < 0 || static_cast<std::size_t>(b.constant_type) >= program.types.size())
+    throw rd::ConfigError(where + ": the binding names no constant type of the program");
+  if (b.outputs.size() > 1) throw rd::ConfigError(where + ": the tabletop kit reports one scene.decisions output");
+  for (const auto& out : b.outputs)
+    for (const std::int32_t p : {out.false_est, out.hidden}) {
+      if (p < 0 || static_cast<std::size_t>(p) >= program.predicates.size())
+        throw rd::ConfigError(where + ": scene.decisions names no predicate of the program");
+      const auto& pred = program.predicates[static_cast<std::size_t>(p)];
+      if (!pred.query || pred.arg_types.size() != 1 || pred.arg_types[0] != b.constant_type)
+        throw rd::ConfigError(fmt::format("{}: scene.decisions: '{}' must be a unary query over the scene's constants",
+                                          where, pred.name));
+    }
+  if (b.kernels.empty()) throw rd::ConfigError(where + ": the tabletop kit needs at least one kernel");
+  for (const auto& k : b.kernels) RefineKernel check(k, true);  // throws for what it cannot run
+}
+
 TabletopResult result_of(const TabletopModel& model) {
   TabletopResult r;
   r.scene = model.scene();
-  r.evidence = model.evidence();
-  const MlnOutcome& m = model.mln_outcome();
-  for (std::size_t i = 0; i < r.scene.objects.size(); ++i)
-    r.probabilities.push_back({m.false_prob.at(Evidence::body(i)), m.hidden_prob.at(Evidence::body(i))});
+  r.evidence = extract_evidence(r.scene, model.block_scene().relation_params());
+  const auto& outputs = model.binding().outputs;
+  if (!outputs.empty()) {
+    const blocks::Decisions& d = outputs.front();
+    for (std::size_t i = 0; i < r.scene.objects.size(); ++i) {
+      const std::int32_t c = blocks::Scene::body_of_object(i);
+      const std::span<const std::int32_t> args(&c, 1);
+      r.probabilities.push_back(
+          {model.semantics().value(model.outcome(), d.false_est, args), model.semantics().value(model.outcome(), d.hidden, args)});
+    }
+  }
   return r;
+}
+
+namespace {
+
+nlohmann::json scene_graph_with_queries(const TabletopModel& model, const TabletopResult& result) {
+  nlohmann::json j = scene_graph_json(result);
+  j["queries"] = nlohmann::json(model.semantics().queries_json(model.outcome(), model.block_scene().names()));
+  return j;
+}
+
+}  // namespace
+
+nlohmann::json scene_graph_of(const TabletopModel& model) { return scene_graph_with_queries(model, result_of(model)); }
+
+std::string evidence_db_of(const TabletopModel& model) {
+  return model.semantics().evidence_db(model.outcome(), model.block_scene().names());
 }
 
 namespace {
@@ -48,8 +93,7 @@ namespace {
 void write_outputs(const rm::RunResult&, rm::Model& best, cli::OutputDir& out) {
   const auto& model = static_cast<const TabletopModel&>(best);
   const TabletopResult result = result_of(model);
-  validate_result(result);
-  out.write("scene_graph.json", scene_graph_json(result).dump(2) + "\n");
+  out.write("scene_graph.json", scene_graph_with_queries(model, result).dump(2) + "\n");
   out.write("graph.dot", graph_dot(result));
   const std::string why = render_dot_png(out.path_of("graph.dot"), out.path_of("graph.png"));
   if (!why.empty()) std::cerr << "tabletop: graph.png skipped: " << why << "\n";
@@ -63,63 +107,48 @@ void write_outputs(const rm::RunResult&, rm::Model& best, cli::OutputDir& out) {
 
 }  // namespace
 
-KitSetup make_setup(std::shared_ptr<const KitConfig> config, const runtime::domain::MlnBinding& binding,
-                    std::shared_ptr<const Scene> scene) {
+KitSetup make_setup(const blocks::Binding& binding, std::shared_ptr<const Scene> scene, KitOptions options) {
+  check_binding(binding);
   KitSetup k;
-  k.config = config;
   k.scene = scene;
-  k.setup.model_factory = [config, binding, scene](unsigned) -> std::unique_ptr<rm::Model> {
-    return std::make_unique<TabletopModel>(scene, config, binding);
+  const blocks::Binding* b = &binding;
+  k.setup.model_factory = [b, scene, options](unsigned) -> std::unique_ptr<rm::Model> {
+    return std::make_unique<TabletopModel>(scene, *b, options);
   };
-  for (const auto& kc : config->kernels) k.setup.kernels.push_back(std::make_shared<RefineKernel>(kc));
-  try {
-    k.setup.schedule = rm::Schedule(rm::kernel_infos(k.setup.kernels), config->schedule);
-  } catch (const rm::ScheduleError& e) {
-    throw runtime::domain::ConfigError(config->source + ": schedule: " + e.what());
-  }
+  rd::KernelTable table = rd::make_kernels(binding.kernels, binding.schedule, [&](const auto& decl) {
+    return std::make_shared<const RefineKernel>(decl, options.current_competes);
+  });
+  k.setup.kernels = std::move(table.kernels);
+  k.setup.schedule = std::move(table.schedule);
   k.setup.write_results = write_outputs;
-  const auto& ev = config->evidence;
-  k.setup.summary_extra = {
-      {"objects", scene->objects.size()},
-      {"evidence",
-       {{"stable_tol_rad", ev.stable_tol_rad},
-        {"contact_eps_m", ev.contact_eps},
-        {"intersect_eps_m", ev.intersect_eps},
-        {"vertical_contact_eps_m", ev.vertical_contact_eps},
-        {"vertical_intersect_eps_m", ev.vertical_intersect_eps},
-        {"higher_tol_m", ev.higher_tol}}},
-      {"likelihood",
-       {{"sigma_px", config->likelihood.sigma_px},
-        {"robust", config->likelihood.robust},
-        {"outlier_px", config->likelihood.outlier_px}}}};
+  k.setup.evidence_db = [](rm::Model& best) { return evidence_db_of(static_cast<const TabletopModel&>(best)); };
+  nlohmann::json extractors = nlohmann::json::array();
+  for (const auto& e : binding.extractors) extractors.push_back(e.text);
+  k.setup.summary_extra = {{"objects", scene->objects.size()},
+                           {"extractors", std::move(extractors)},
+                           {"likelihood",
+                            {{"sigma_px", binding.likelihood.sigma_px},
+                             {"robust", binding.likelihood.robust},
+                             {"outlier_px", binding.likelihood.outlier_px}}}};
   return k;
 }
 
-cli::DomainSpec domain_spec(const runtime::domain::DomainConfig& config, const runtime::domain::MlnBinding& binding) {
-  // Validated now; a configuration error is reported by `load` (exit code 1 with the
-  // message) so the generated main, which has no handler of its own, never terminates.
-  std::shared_ptr<const KitConfig> kit;
-  std::string config_error;
-  try {
-    kit = std::make_shared<const KitConfig>(read_kit_config(config));
-    MlnEvaluator probe(binding, {std::string(kTableId)});  // the binding fits the kit
-  } catch (const runtime::domain::ConfigError& e) {
-    config_error = e.what();
-  }
+cli::DomainSpec domain_spec(const blocks::Binding& binding) {
   cli::DomainSpec spec;
-  spec.name = config.domain;
+  spec.name = binding.domain;
   spec.version = "1.0.0";
   spec.description = "table-top scene graph from 6D pose estimates (knowledge-supervised DDMCMC)";
   spec.inputs_help = "scene.json";
   spec.default_iterations = 2000;
   spec.flags = {{"input-format", "input format: scene (scene.json) or hope (HOPE meta_data.json)", "scene",
                  cli::DomainFlag::Kind::text}};
-  spec.load = [kit, binding, config_error](const cli::DomainInput& in) {
-    if (!config_error.empty()) throw runtime::domain::ConfigError(config_error);
+  const blocks::Binding* b = &binding;
+  // The binding is checked by make_setup inside `load`, where the CLI reports a ConfigError.
+  spec.load = [b](const cli::DomainInput& in) {
     std::vector<std::string> warnings;
     auto scene = std::make_shared<const Scene>(load_input(in.inputs.at(0), in.flags.text("input-format"), warnings));
     for (const auto& w : warnings) std::cerr << "tabletop: warning: " << w << "\n";
-    KitSetup k = make_setup(kit, binding, scene);
+    KitSetup k = make_setup(*b, scene);
     if (!scene->image.empty()) k.setup.extra_inputs.push_back(scene->image);
     return std::move(k.setup);
   };

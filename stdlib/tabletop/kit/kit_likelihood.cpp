@@ -10,7 +10,7 @@
 namespace ksmc::stdlib::tabletop::kit {
 
 double object_log_likelihood(const Scene& scene, const SceneObject& object, const Pose& pose_in_table,
-                             const KeypointModel& model) {
+                             const blocks::KeypointGaussian& model) {
   const double s2 = model.sigma_px * model.sigma_px;
   const double norm = -std::log(2.0 * std::numbers::pi * s2);
   const double cap2 = model.outlier_px * model.outlier_px;

@@ -10,13 +10,13 @@
 // outlier penalty in the robust one. An object without keypoints contributes 0.
 #pragma once
 
-#include "stdlib/tabletop/kit/kit_config.h"
+#include "stdlib/tabletop/blocks.h"
 #include "stdlib/tabletop/pose.h"
 #include "stdlib/tabletop/scene.h"
 
 namespace ksmc::stdlib::tabletop::kit {
 
 double object_log_likelihood(const Scene& scene, const SceneObject& object, const Pose& pose_in_table,
-                             const KeypointModel& model);
+                             const blocks::KeypointGaussian& model);
 
 }  // namespace ksmc::stdlib::tabletop::kit

@@ -1,61 +1,101 @@
 #include "stdlib/tabletop/kit/tabletop_model.h"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <variant>
 
 #include <fmt/format.h>
 
+#include "runtime/mln/mcsat.h"
 #include "stdlib/tabletop/kit/kit_likelihood.h"
 
 namespace ksmc::stdlib::tabletop::kit {
 
+namespace rd = ksmc::runtime::domain;
+
 namespace {
 
-std::vector<std::string> body_ids(const Scene& s) {
-  std::vector<std::string> ids{kTableId};
-  for (const auto& o : s.objects) ids.push_back(o.id);
-  return ids;
+rd::SemanticOptions semantic_options(const KitOptions& o) {
+  rd::SemanticOptions s;
+  s.cache_capacity = o.cache_capacity;
+  s.log_z = true;  // both readings of `prior mln` are reported (summary, tests)
+  s.log_map = true;
+  // mln::infer's own sampling defaults (components too large to enumerate), as the kit has
+  // always run them.
+  const runtime::mln::McSatOptions mcsat;
+  s.mcsat_samples = static_cast<std::uint64_t>(mcsat.samples);
+  s.mcsat_burn_in = static_cast<std::uint64_t>(mcsat.burn_in);
+  return s;
+}
+
+bool has_mln_prior(const blocks::Binding& b) {
+  for (const auto& p : b.priors)
+    if (std::holds_alternative<blocks::MlnPrior>(p)) return true;
+  return false;
 }
 
 }  // namespace
 
-TabletopModel::TabletopModel(std::shared_ptr<const Scene> initial, std::shared_ptr<const KitConfig> config,
-                             const runtime::domain::MlnBinding& binding)
-    : config_(std::move(config)), scene_(*initial), mln_(binding, body_ids(scene_)) {
-  for (std::size_t i = 0; i < scene_.objects.size(); ++i)
-    if (!scene_.objects[i].keypoints_model.empty()) observed_.push_back(i);
+TabletopModel::TabletopModel(std::shared_ptr<const Scene> initial, const blocks::Binding& binding, KitOptions options)
+    : binding_(binding),
+      options_(options),
+      mln_prior_(has_mln_prior(binding)),
+      scene_(*initial),
+      sem_(binding, semantic_options(options)) {
+  for (std::size_t i = 0; i < scene().objects.size(); ++i)
+    if (!scene().objects[i].keypoints_model.empty()) observed_.push_back(i);
   recompute_all();
 }
 
+double TabletopModel::prior_of(const rd::Outcome& o) const {
+  if (!o.possible) return -std::numeric_limits<double>::infinity();
+  double lp = 0.0;
+  if (mln_prior_) lp += options_.prior_quantity == PriorQuantity::map ? o.log_map : o.log_z;
+  if (!binding_.conditional_priors.empty()) lp += sem_.conditional_priors(scene_, o);
+  return lp;
+}
+
 void TabletopModel::recompute_all() {
-  evidence_ = extract_evidence(scene_, config_->evidence);
-  object_ll_.assign(scene_.objects.size(), 0.0);
+  object_ll_.assign(scene().objects.size(), 0.0);
   log_likelihood_ = 0.0;
-  for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
-    object_ll_[i] = object_log_likelihood_at(i, scene_.objects[i].pose);
+  for (std::size_t i = 0; i < scene().objects.size(); ++i) {
+    object_ll_[i] = object_log_likelihood_at(i, scene().objects[i].pose);
     log_likelihood_ += object_ll_[i];
   }
-  outcome_ = mln_.evaluate(evidence_);
+  outcome_ = sem_.evaluate(scene_, scene_.bodies());
+  log_prior_ = prior_of(*outcome_);
   moving_ = false;
 }
 
 double TabletopModel::object_log_likelihood_at(std::size_t object, const Pose& pose) const {
-  return kit::object_log_likelihood(scene_, scene_.objects.at(object), pose, config_->likelihood);
+  return kit::object_log_likelihood(scene(), scene().objects.at(object), pose, binding_.likelihood);
 }
 
 void TabletopModel::begin_move(std::size_t object, const Pose& pose, double ll_at_pose) {
   if (moving_) throw std::logic_error("TabletopModel::begin_move: a move is already pending");
-  if (object >= scene_.objects.size()) throw std::out_of_range("TabletopModel::begin_move: no such object");
+  if (object >= scene().objects.size()) throw std::out_of_range("TabletopModel::begin_move: no such object");
   moving_ = true;
   moved_ = object;
-  old_pose_ = scene_.objects[object].pose;
   old_object_ll_ = object_ll_[object];
   old_log_likelihood_ = log_likelihood_;
+  old_log_prior_ = log_prior_;
   old_outcome_ = outcome_;
 
-  scene_.objects[object].pose = pose;
+  const std::int32_t body = blocks::Scene::body_of_object(object);
+  // hover(j) reads every pair of j: it can change only for bodies whose touching status
+  // with the moved body changes (blocks::touching_row), so those are re-extracted too.
+  const std::vector<std::uint32_t> before = blocks::touching_row(scene_, body);
+  scene_.set_pose(body, pose);
+  const std::vector<std::uint32_t> after = blocks::touching_row(scene_, body);
+  changed_.assign(1, body);
+  const bool every = scene_.hover_tolerances().size() > 32;  // more than touching_row tracks
+  for (std::size_t j = 0; j < before.size(); ++j)
+    if (static_cast<std::int32_t>(j) != body && (every || before[j] != after[j]))
+      changed_.push_back(static_cast<std::int32_t>(j));
+
   const double ll = std::isnan(ll_at_pose) ? object_log_likelihood_at(object, pose) : ll_at_pose;
   object_ll_[object] = ll;
   log_likelihood_ = old_log_likelihood_ - old_object_ll_ + ll;
@@ -64,30 +104,30 @@ void TabletopModel::begin_move(std::size_t object, const Pose& pose, double ll_a
     log_likelihood_ = 0.0;
     for (const double v : object_ll_) log_likelihood_ += v;
   }
-  tentative_ = evidence_;  // copy-assignment reuses the storage of the previous move
-  update_evidence(tentative_, scene_, object, config_->evidence);
-  outcome_ = mln_.evaluate(tentative_);
+  outcome_ = sem_.update(scene_, scene_.bodies(), changed_, *old_outcome_);
+  log_prior_ = prior_of(*outcome_);
 }
 
 void TabletopModel::accept() {
   if (!moving_) return;
-  std::swap(evidence_, tentative_);
+  scene_.commit();
   moving_ = false;
   old_outcome_.reset();
 }
 
 void TabletopModel::reject() {
   if (!moving_) return;
-  scene_.objects[moved_].pose = old_pose_;
+  scene_.undo();
   object_ll_[moved_] = old_object_ll_;
   log_likelihood_ = old_log_likelihood_;
+  log_prior_ = old_log_prior_;
   outcome_ = std::move(old_outcome_);
   moving_ = false;
 }
 
 runtime::mcmc::Snapshot TabletopModel::snapshot() const {
   nlohmann::json poses = nlohmann::json::array();
-  for (const auto& o : scene_.objects)
+  for (const auto& o : scene().objects)
     poses.push_back({{"id", o.id},
                      {"t", {o.pose.t.x(), o.pose.t.y(), o.pose.t.z()}},
                      {"q", {o.pose.q.w(), o.pose.q.x(), o.pose.q.y(), o.pose.q.z()}}});
@@ -96,18 +136,22 @@ runtime::mcmc::Snapshot TabletopModel::snapshot() const {
 
 void TabletopModel::restore(const runtime::mcmc::Snapshot& state) {
   const auto& poses = state.at("poses");
-  if (!poses.is_array() || poses.size() != scene_.objects.size())
+  if (!poses.is_array() || poses.size() != scene().objects.size())
     throw std::invalid_argument("TabletopModel::restore: snapshot does not match the scene");
+  if (moving_) reject();
   for (std::size_t i = 0; i < poses.size(); ++i) {
     const auto& p = poses[i];
-    if (p.at("id").get<std::string>() != scene_.objects[i].id)
+    if (p.at("id").get<std::string>() != scene().objects[i].id)
       throw std::invalid_argument(fmt::format("TabletopModel::restore: snapshot object {} is not '{}'", i,
-                                              scene_.objects[i].id));
+                                              scene().objects[i].id));
     const auto& t = p.at("t");
     const auto& q = p.at("q");
-    scene_.objects[i].pose.t = Eigen::Vector3d(t.at(0).get<double>(), t.at(1).get<double>(), t.at(2).get<double>());
-    scene_.objects[i].pose.q = Eigen::Quaterniond(q.at(0).get<double>(), q.at(1).get<double>(),
-                                                  q.at(2).get<double>(), q.at(3).get<double>());
+    Pose pose;
+    pose.t = Eigen::Vector3d(t.at(0).get<double>(), t.at(1).get<double>(), t.at(2).get<double>());
+    pose.q = Eigen::Quaterniond(q.at(0).get<double>(), q.at(1).get<double>(), q.at(2).get<double>(),
+                                q.at(3).get<double>());
+    scene_.set_pose(blocks::Scene::body_of_object(i), pose);
+    scene_.commit();
   }
   recompute_all();
 }

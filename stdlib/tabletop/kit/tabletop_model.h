@@ -1,36 +1,51 @@
-// The table-top posterior of eq. 4.1 as an mcmc::Model:
+// The table-top posterior of eq. 4.1 as an mcmc::Model, driven by a domain's binding:
 //   log p(M|D) = log p(D|M) + log p(M)
 //   log p(D|M) = Σ_o keypoint log-likelihood of o at its pose (eq. 4.4, kit_likelihood.h)
-//   log p(M)   = eq. 4.3 for the scene graph of the poses: Σ w n of the world made of the
-//                extracted evidence and the most probable query atoms (or, with
-//                PriorQuantity::log_z, log Z over the query atoms; mln_evaluator.h)
-// The state is the pose of every object (sizes and keypoints are fixed). A move changes one
-// object's pose: its evidence is re-extracted incrementally (update_evidence), its
-// likelihood term recomputed, and the MLN term looked up (re-run only on new evidence bits).
+//   log p(M)   = with `prior mln`: eq. 4.3 for the scene graph of the poses, Σ w n of the
+//                world made of the extracted evidence and the most probable query atoms (or,
+//                with PriorQuantity::log_z, log Z over the query atoms); plus the conditional
+//                prior terms of the binding
+// The evidence is what the binding's generated extractors say of the scene
+// (runtime/domain/semantics.h), the Markov logic run only for new evidence bits. The state is
+// the pose of every object (sizes and keypoints are fixed). A move changes one object's pose:
+// only atoms touching it (and hover atoms of bodies whose touching status with it changes)
+// are re-extracted, its likelihood term recomputed.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
-#include "runtime/domain/config.h"
+#include "runtime/domain/semantics.h"
 #include "runtime/mcmc/model.h"
-#include "stdlib/tabletop/evidence.h"
-#include "stdlib/tabletop/kit/kit_config.h"
-#include "stdlib/tabletop/kit/mln_evaluator.h"
+#include "stdlib/tabletop/blocks.h"
 #include "stdlib/tabletop/scene.h"
 
 namespace ksmc::stdlib::tabletop::kit {
 
+// What `prior mln` scores a state with (docs/tabletop_kit.md, "Posterior"):
+//   map   — eq. 4.3 for the scene graph the state stands for: Σ_i w_i n_i(x*) of the world
+//           x* = (extracted evidence, most probable query atoms), the default;
+//   log_z — log Σ_q exp(Σ_i w_i n_i(e, q)) over all query worlds (the earlier reading; it
+//           rewards evidence that leaves query atoms unconstrained, i.e. fewer relations).
+enum class PriorQuantity { map, log_z };
+
+// Sampler settings that are not part of a domain file (tests and calibration compare them).
+struct KitOptions {
+  PriorQuantity prior_quantity = PriorQuantity::map;
+  // The current pose takes part in the refine move's choice of the best weight (refine_kernel.h).
+  bool current_competes = true;
+  std::size_t cache_capacity = 512;
+};
+
 class TabletopModel : public runtime::mcmc::Model {
  public:
-  TabletopModel(std::shared_ptr<const Scene> initial, std::shared_ptr<const KitConfig> config,
-                const runtime::domain::MlnBinding& binding);
+  // `binding` must outlive the model (the generated binding is a static).
+  TabletopModel(std::shared_ptr<const Scene> initial, const blocks::Binding& binding, KitOptions options = {});
 
   double log_likelihood() const override { return log_likelihood_; }
-  double log_prior() const override {
-    return config_->prior_quantity == PriorQuantity::map ? outcome_->log_map : outcome_->log_z;
-  }
+  double log_prior() const override { return log_prior_; }
   void accept() override;
   void reject() override;
   runtime::mcmc::Snapshot snapshot() const override;
@@ -42,36 +57,41 @@ class TabletopModel : public runtime::mcmc::Model {
   void begin_move(std::size_t object, const Pose& pose, double log_likelihood_at_pose);
   bool in_move() const noexcept { return moving_; }
 
-  const Scene& scene() const noexcept { return scene_; }
-  const Evidence& evidence() const noexcept { return moving_ ? tentative_ : evidence_; }
-  const MlnOutcome& mln_outcome() const noexcept { return *outcome_; }
+  const Scene& scene() const noexcept { return scene_.input(); }
+  const blocks::Scene& block_scene() const noexcept { return scene_; }
+  const runtime::domain::Outcome& outcome() const noexcept { return *outcome_; }
+  const runtime::domain::Semantics<blocks::Scene>& semantics() const noexcept { return sem_; }
+  const blocks::Binding& binding() const noexcept { return binding_; }
+  const KitOptions& options() const noexcept { return options_; }
   double object_log_likelihood(std::size_t object) const { return object_ll_[object]; }
   double object_log_likelihood_at(std::size_t object, const Pose& pose) const;
   // Indices of the objects with at least one keypoint (what the refine move may pick).
   const std::vector<std::size_t>& observed_objects() const noexcept { return observed_; }
-  const KitConfig& config() const noexcept { return *config_; }
-  MlnEvaluator& mln() noexcept { return mln_; }
-  const MlnEvaluator& mln() const noexcept { return mln_; }
+  // Constants re-extracted by the last move (the moved body first).
+  const std::vector<std::int32_t>& last_changed() const noexcept { return changed_; }
 
  private:
   void recompute_all();
+  double prior_of(const runtime::domain::Outcome& o) const;
 
-  std::shared_ptr<const KitConfig> config_;
-  Scene scene_;
-  MlnEvaluator mln_;
-  Evidence evidence_;
-  Evidence tentative_;
+  const blocks::Binding& binding_;
+  KitOptions options_;
+  bool mln_prior_ = false;
+  blocks::Scene scene_;
+  runtime::domain::Semantics<blocks::Scene> sem_;
   std::vector<std::size_t> observed_;
   std::vector<double> object_ll_;
   double log_likelihood_ = 0.0;
-  std::shared_ptr<const MlnOutcome> outcome_;
+  double log_prior_ = 0.0;
+  std::shared_ptr<const runtime::domain::Outcome> outcome_;
+  std::vector<std::int32_t> changed_;
   // Undo record of the current move.
   bool moving_ = false;
   std::size_t moved_ = 0;
-  Pose old_pose_;
   double old_object_ll_ = 0.0;
   double old_log_likelihood_ = 0.0;
-  std::shared_ptr<const MlnOutcome> old_outcome_;
+  double old_log_prior_ = 0.0;
+  std::shared_ptr<const runtime::domain::Outcome> old_outcome_;
 };
 
 }  // namespace ksmc::stdlib::tabletop::kit

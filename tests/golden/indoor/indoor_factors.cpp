@@ -8,12 +8,12 @@ namespace {
 namespace mln = ksmc::runtime::mln;
 
 // Rule weights as written in the domain file (`prob p` is the log-odds log(p / (1 - p))).
-constexpr double kW_r5_room = 2.1972245773362196;  // prob 0.9
-constexpr double kW_r6_corr = 2.1972245773362196;  // prob 0.9
-constexpr double kW_r7_hall = 2.1972245773362196;  // prob 0.9
-constexpr double kW_r8_corr = 1.3862943611198908;  // prob 0.8
-constexpr double kW_r9_room = 0.8472978603872034;  // prob 0.7
-constexpr double kW_r10_sale = 2.1972245773362196;  // prob 0.9
+constexpr double kW_room_b67a = 2.1972245773362196;  // prob 0.9
+constexpr double kW_corr_844f = 2.1972245773362196;  // prob 0.9
+constexpr double kW_hall_333a = 2.1972245773362196;  // prob 0.9
+constexpr double kW_corr_a5f2 = 1.3862943611198908;  // prob 0.8
+constexpr double kW_room_df3c = 0.8472978603872034;  // prob 0.7
+constexpr double kW_sale_3041 = 2.1972245773362196;  // prob 0.9
 
 }  // namespace
 
@@ -31,53 +31,53 @@ const mln::Program& program() {
     p.add_predicate({"Hall", {kType_unit}, true, false, -1});
     p.add_predicate({"Other", {kType_unit}, true, false, -1});
     p.add_predicate({"SaLe", {kType_unit, kType_unit}, true, false, -1});
-    // r1_room_corr_hall (domains/indoor.ksm:16)
-    p.add_group({{kPred_Room, kPred_Corr, kPred_Hall, kPred_Other}, "exactly one of Room(u), Corr(u), Hall(u), Other(u)", {"domains/indoor.ksm", 16}});
-    // r2_sale (domains/indoor.ksm:17)
-    p.add_clause({"r2_sale",
+    // room_corr_hall_7d3d: hard exactly one of Room(u), Corr(u), Hall(u), Other(u)
+    p.add_group({{kPred_Room, kPred_Corr, kPred_Hall, kPred_Other}, "exactly one of Room(u), Corr(u), Hall(u), Other(u)", {"domains/indoor.ksm", 0}});
+    // sale_a4cb: hard !SaLe(u, u)
+    p.add_clause({"sale_a4cb",
                   {{"u", kType_unit, false}},
                   {{kPred_SaLe, true, {mln::Term::var(0), mln::Term::var(0)}}},
-                  mln::kHardWeight, true, "!SaLe(u, u)", {"domains/indoor.ksm", 17}});
-    // r3_sale (domains/indoor.ksm:18)
-    p.add_clause({"r3_sale",
+                  mln::kHardWeight, true, "!SaLe(u, u)", {"domains/indoor.ksm", 0}});
+    // sale_c2be: hard SaLe(a, b) => SaLe(b, a)
+    p.add_clause({"sale_c2be",
                   {{"a", kType_unit, false}, {"b", kType_unit, false}},
                   {{kPred_SaLe, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_SaLe, false, {mln::Term::var(1), mln::Term::var(0)}}},
-                  mln::kHardWeight, true, "SaLe(a, b) => SaLe(b, a)", {"domains/indoor.ksm", 18}});
-    // r4_sale (domains/indoor.ksm:19)
-    p.add_clause({"r4_sale",
+                  mln::kHardWeight, true, "SaLe(a, b) => SaLe(b, a)", {"domains/indoor.ksm", 0}});
+    // sale_b022: hard !Adj(a, b) => !SaLe(a, b)
+    p.add_clause({"sale_b022",
                   {{"a", kType_unit, false}, {"b", kType_unit, false}},
                   {{kPred_Adj, false, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_SaLe, true, {mln::Term::var(0), mln::Term::var(1)}}},
-                  mln::kHardWeight, true, "!Adj(a, b) => !SaLe(a, b)", {"domains/indoor.ksm", 19}});
-    // r5_room (domains/indoor.ksm:20)
-    p.add_clause({"r5_room",
+                  mln::kHardWeight, true, "!Adj(a, b) => !SaLe(a, b)", {"domains/indoor.ksm", 0}});
+    // room_b67a: RoLi(u) => Room(u)
+    p.add_clause({"room_b67a",
                   {{"u", kType_unit, false}},
                   {{kPred_RoLi, true, {mln::Term::var(0)}}, {kPred_Room, false, {mln::Term::var(0)}}},
-                  kW_r5_room, false, "RoLi(u) => Room(u)", {"domains/indoor.ksm", 20}});
-    // r6_corr (domains/indoor.ksm:21)
-    p.add_clause({"r6_corr",
+                  kW_room_b67a, false, "RoLi(u) => Room(u)", {"domains/indoor.ksm", 0}});
+    // corr_844f: CoLi(u) => Corr(u)
+    p.add_clause({"corr_844f",
                   {{"u", kType_unit, false}},
                   {{kPred_CoLi, true, {mln::Term::var(0)}}, {kPred_Corr, false, {mln::Term::var(0)}}},
-                  kW_r6_corr, false, "CoLi(u) => Corr(u)", {"domains/indoor.ksm", 21}});
-    // r7_hall (domains/indoor.ksm:22)
-    p.add_clause({"r7_hall",
+                  kW_corr_844f, false, "CoLi(u) => Corr(u)", {"domains/indoor.ksm", 0}});
+    // hall_333a: HaLi(u) => Hall(u)
+    p.add_clause({"hall_333a",
                   {{"u", kType_unit, false}},
                   {{kPred_HaLi, true, {mln::Term::var(0)}}, {kPred_Hall, false, {mln::Term::var(0)}}},
-                  kW_r7_hall, false, "HaLi(u) => Hall(u)", {"domains/indoor.ksm", 22}});
-    // r8_corr (domains/indoor.ksm:23)
-    p.add_clause({"r8_corr",
+                  kW_hall_333a, false, "HaLi(u) => Hall(u)", {"domains/indoor.ksm", 0}});
+    // corr_a5f2: MulDoor(u) ^ CoLi(u) => Corr(u)
+    p.add_clause({"corr_a5f2",
                   {{"u", kType_unit, false}},
                   {{kPred_MulDoor, true, {mln::Term::var(0)}}, {kPred_CoLi, true, {mln::Term::var(0)}}, {kPred_Corr, false, {mln::Term::var(0)}}},
-                  kW_r8_corr, false, "MulDoor(u) ^ CoLi(u) => Corr(u)", {"domains/indoor.ksm", 23}});
-    // r9_room (domains/indoor.ksm:24)
-    p.add_clause({"r9_room",
+                  kW_corr_a5f2, false, "MulDoor(u) ^ CoLi(u) => Corr(u)", {"domains/indoor.ksm", 0}});
+    // room_df3c: MulDoor(u) => !Room(u)
+    p.add_clause({"room_df3c",
                   {{"u", kType_unit, false}},
                   {{kPred_MulDoor, true, {mln::Term::var(0)}}, {kPred_Room, true, {mln::Term::var(0)}}},
-                  kW_r9_room, false, "MulDoor(u) => !Room(u)", {"domains/indoor.ksm", 24}});
-    // r10_sale (domains/indoor.ksm:25)
-    p.add_clause({"r10_sale",
+                  kW_room_df3c, false, "MulDoor(u) => !Room(u)", {"domains/indoor.ksm", 0}});
+    // sale_3041: Room(a) ^ Room(b) ^ Adj(a, b) => SaLe(a, b)
+    p.add_clause({"sale_3041",
                   {{"a", kType_unit, false}, {"b", kType_unit, false}},
                   {{kPred_Room, true, {mln::Term::var(0)}}, {kPred_Room, true, {mln::Term::var(1)}}, {kPred_Adj, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_SaLe, false, {mln::Term::var(0), mln::Term::var(1)}}},
-                  kW_r10_sale, false, "Room(a) ^ Room(b) ^ Adj(a, b) => SaLe(a, b)", {"domains/indoor.ksm", 25}});
+                  kW_sale_3041, false, "Room(a) ^ Room(b) ^ Adj(a, b) => SaLe(a, b)", {"domains/indoor.ksm", 0}});
     return p;
   }();
   return p;
@@ -90,31 +90,31 @@ mln::Domain make_domain() {
 
 namespace {
 
-// r2_sale (domains/indoor.ksm:17): hard !SaLe(u, u)
-void ground_r2_sale(mln::FactorContext& g) {
+// sale_a4cb: hard !SaLe(u, u)
+void ground_sale_a4cb(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_unit = g.size(kType_unit);
   for (std::int32_t v_u = 0; v_u < n_unit; ++v_u) {
     g.begin();
     if (g.query(kPred_SaLe, std::int64_t{v_u} * n_unit + v_u, true)) continue;  // !SaLe(u, u)
-    g.hard(0, {v_u});
+    g.hard(clause, {v_u});
   }
 }
 
-// r3_sale (domains/indoor.ksm:18): hard SaLe(a, b) => SaLe(b, a)
-void ground_r3_sale(mln::FactorContext& g) {
+// sale_c2be: hard SaLe(a, b) => SaLe(b, a)
+void ground_sale_c2be(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_unit = g.size(kType_unit);
   for (std::int32_t v_a = 0; v_a < n_unit; ++v_a) {
     for (std::int32_t v_b = 0; v_b < n_unit; ++v_b) {
       g.begin();
       if (g.query(kPred_SaLe, std::int64_t{v_a} * n_unit + v_b, true)) continue;  // !SaLe(a, b)
       if (g.query(kPred_SaLe, std::int64_t{v_b} * n_unit + v_a, false)) continue;  // SaLe(b, a)
-      g.hard(1, {v_a, v_b});
+      g.hard(clause, {v_a, v_b});
     }
   }
 }
 
-// r4_sale (domains/indoor.ksm:19): hard !Adj(a, b) => !SaLe(a, b)
-void ground_r4_sale(mln::FactorContext& g) {
+// sale_b022: hard !Adj(a, b) => !SaLe(a, b)
+void ground_sale_b022(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_unit = g.size(kType_unit);
   for (std::int32_t v_a = 0; v_a < n_unit; ++v_a) {
     for (std::int32_t v_b = 0; v_b < n_unit; ++v_b) {
@@ -123,99 +123,99 @@ void ground_r4_sale(mln::FactorContext& g) {
       }
       g.begin();
       if (g.query(kPred_SaLe, std::int64_t{v_a} * n_unit + v_b, true)) continue;  // !SaLe(a, b)
-      g.hard(2, {v_a, v_b});
+      g.hard(clause, {v_a, v_b});
     }
   }
 }
 
-// r5_room (domains/indoor.ksm:20): RoLi(u) => Room(u)
-void ground_r5_room(mln::FactorContext& g) {
+// room_b67a: RoLi(u) => Room(u)
+void ground_room_b67a(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_unit = g.size(kType_unit);
   for (std::int32_t v_u = 0; v_u < n_unit; ++v_u) {
     if (!g.ev(kPred_RoLi, v_u)) {  // !RoLi(u)
-      g.satisfied(kW_r5_room);
+      g.satisfied(kW_room_b67a);
       continue;
     }
     g.begin();
-    if (g.query(kPred_Room, v_u, false)) { g.satisfied(kW_r5_room); continue; }  // Room(u)
-    g.soft(kW_r5_room, 3);
+    if (g.query(kPred_Room, v_u, false)) { g.satisfied(kW_room_b67a); continue; }  // Room(u)
+    g.soft(kW_room_b67a, clause);
   }
 }
 
-// r6_corr (domains/indoor.ksm:21): CoLi(u) => Corr(u)
-void ground_r6_corr(mln::FactorContext& g) {
+// corr_844f: CoLi(u) => Corr(u)
+void ground_corr_844f(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_unit = g.size(kType_unit);
   for (std::int32_t v_u = 0; v_u < n_unit; ++v_u) {
     if (!g.ev(kPred_CoLi, v_u)) {  // !CoLi(u)
-      g.satisfied(kW_r6_corr);
+      g.satisfied(kW_corr_844f);
       continue;
     }
     g.begin();
-    if (g.query(kPred_Corr, v_u, false)) { g.satisfied(kW_r6_corr); continue; }  // Corr(u)
-    g.soft(kW_r6_corr, 4);
+    if (g.query(kPred_Corr, v_u, false)) { g.satisfied(kW_corr_844f); continue; }  // Corr(u)
+    g.soft(kW_corr_844f, clause);
   }
 }
 
-// r7_hall (domains/indoor.ksm:22): HaLi(u) => Hall(u)
-void ground_r7_hall(mln::FactorContext& g) {
+// hall_333a: HaLi(u) => Hall(u)
+void ground_hall_333a(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_unit = g.size(kType_unit);
   for (std::int32_t v_u = 0; v_u < n_unit; ++v_u) {
     if (!g.ev(kPred_HaLi, v_u)) {  // !HaLi(u)
-      g.satisfied(kW_r7_hall);
+      g.satisfied(kW_hall_333a);
       continue;
     }
     g.begin();
-    if (g.query(kPred_Hall, v_u, false)) { g.satisfied(kW_r7_hall); continue; }  // Hall(u)
-    g.soft(kW_r7_hall, 5);
+    if (g.query(kPred_Hall, v_u, false)) { g.satisfied(kW_hall_333a); continue; }  // Hall(u)
+    g.soft(kW_hall_333a, clause);
   }
 }
 
-// r8_corr (domains/indoor.ksm:23): MulDoor(u) ^ CoLi(u) => Corr(u)
-void ground_r8_corr(mln::FactorContext& g) {
+// corr_a5f2: MulDoor(u) ^ CoLi(u) => Corr(u)
+void ground_corr_a5f2(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_unit = g.size(kType_unit);
   for (std::int32_t v_u = 0; v_u < n_unit; ++v_u) {
     if (!g.ev(kPred_MulDoor, v_u)) {  // !MulDoor(u)
-      g.satisfied(kW_r8_corr);
+      g.satisfied(kW_corr_a5f2);
       continue;
     }
     if (!g.ev(kPred_CoLi, v_u)) {  // !CoLi(u)
-      g.satisfied(kW_r8_corr);
+      g.satisfied(kW_corr_a5f2);
       continue;
     }
     g.begin();
-    if (g.query(kPred_Corr, v_u, false)) { g.satisfied(kW_r8_corr); continue; }  // Corr(u)
-    g.soft(kW_r8_corr, 6);
+    if (g.query(kPred_Corr, v_u, false)) { g.satisfied(kW_corr_a5f2); continue; }  // Corr(u)
+    g.soft(kW_corr_a5f2, clause);
   }
 }
 
-// r9_room (domains/indoor.ksm:24): MulDoor(u) => !Room(u)
-void ground_r9_room(mln::FactorContext& g) {
+// room_df3c: MulDoor(u) => !Room(u)
+void ground_room_df3c(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_unit = g.size(kType_unit);
   for (std::int32_t v_u = 0; v_u < n_unit; ++v_u) {
     if (!g.ev(kPred_MulDoor, v_u)) {  // !MulDoor(u)
-      g.satisfied(kW_r9_room);
+      g.satisfied(kW_room_df3c);
       continue;
     }
     g.begin();
-    if (g.query(kPred_Room, v_u, true)) { g.satisfied(kW_r9_room); continue; }  // !Room(u)
-    g.soft(kW_r9_room, 7);
+    if (g.query(kPred_Room, v_u, true)) { g.satisfied(kW_room_df3c); continue; }  // !Room(u)
+    g.soft(kW_room_df3c, clause);
   }
 }
 
-// r10_sale (domains/indoor.ksm:25): Room(a) ^ Room(b) ^ Adj(a, b) => SaLe(a, b)
-void ground_r10_sale(mln::FactorContext& g) {
+// sale_3041: Room(a) ^ Room(b) ^ Adj(a, b) => SaLe(a, b)
+void ground_sale_3041(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_unit = g.size(kType_unit);
   for (std::int32_t v_a = 0; v_a < n_unit; ++v_a) {
     for (std::int32_t v_b = 0; v_b < n_unit; ++v_b) {
       if (!g.ev(kPred_Adj, std::int64_t{v_a} * n_unit + v_b)) {  // !Adj(a, b)
-        g.satisfied(kW_r10_sale);
+        g.satisfied(kW_sale_3041);
         continue;
       }
       g.begin();
-      if (g.query(kPred_Room, v_a, true)) { g.satisfied(kW_r10_sale); continue; }  // !Room(a)
-      if (g.query(kPred_Room, v_b, true)) { g.satisfied(kW_r10_sale); continue; }  // !Room(b)
-      if (g.query(kPred_SaLe, std::int64_t{v_a} * n_unit + v_b, false)) { g.satisfied(kW_r10_sale); continue; }  // SaLe(a, b)
-      g.soft(kW_r10_sale, 8);
+      if (g.query(kPred_Room, v_a, true)) { g.satisfied(kW_sale_3041); continue; }  // !Room(a)
+      if (g.query(kPred_Room, v_b, true)) { g.satisfied(kW_sale_3041); continue; }  // !Room(b)
+      if (g.query(kPred_SaLe, std::int64_t{v_a} * n_unit + v_b, false)) { g.satisfied(kW_sale_3041); continue; }  // SaLe(a, b)
+      g.soft(kW_sale_3041, clause);
     }
   }
 }
@@ -225,15 +225,16 @@ void ground_r10_sale(mln::FactorContext& g) {
 mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) {
   mln::Grounding grounding = mln::prepare_grounding(program(), domain, evidence);
   mln::FactorContext g(grounding, evidence);
-  ground_r2_sale(g);
-  ground_r3_sale(g);
-  ground_r4_sale(g);
-  ground_r5_room(g);
-  ground_r6_corr(g);
-  ground_r7_hall(g);
-  ground_r8_corr(g);
-  ground_r9_room(g);
-  ground_r10_sale(g);
+  std::int32_t clause = 0;  // clause index in program() order
+  ground_sale_a4cb(g, clause++);
+  ground_sale_c2be(g, clause++);
+  ground_sale_b022(g, clause++);
+  ground_room_b67a(g, clause++);
+  ground_corr_844f(g, clause++);
+  ground_hall_333a(g, clause++);
+  ground_corr_a5f2(g, clause++);
+  ground_room_df3c(g, clause++);
+  ground_sale_3041(g, clause++);
   return grounding;
 }
 

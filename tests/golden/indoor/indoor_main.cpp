@@ -6,6 +6,5 @@
 
 int main(int argc, char** argv) {
   return ksmc::runtime::cli::run_domain_main(
-      argc, argv,
-      ksmc::stdlib::indoor::kit::domain_spec(ksmc_generated::indoor::domain_config(), ksmc_generated::indoor::mln_binding()));
+      argc, argv, ksmc::stdlib::indoor::kit::domain_spec(ksmc_generated::indoor::binding()));
 }

@@ -8,13 +8,13 @@ namespace {
 namespace mln = ksmc::runtime::mln;
 
 // Rule weights as written in the domain file (`prob p` is the log-odds log(p / (1 - p))).
-constexpr double kW_r7_corner = 2.1972245773362196;  // prob 0.9
-constexpr double kW_r8_samewall = 2.1972245773362196;  // prob 0.9
-constexpr double kW_r9_samewall = 0.8472978603872034;  // prob 0.7
-constexpr double kW_r10_spurious = 1.3862943611198908;  // prob 0.8
-constexpr double kW_r11_spurious = 2.1972245773362196;  // prob 0.9
-constexpr double kW_r12_spurious = 2.9444389791664394;  // prob 0.95
-constexpr double kW_r13_spurious = 2.1972245773362196;  // prob 0.9
+constexpr double kW_corner_8878 = 2.1972245773362196;  // prob 0.9
+constexpr double kW_samewall_1a71 = 2.1972245773362196;  // prob 0.9
+constexpr double kW_samewall_4ee6 = 0.8472978603872034;  // prob 0.7
+constexpr double kW_spurious_18de = 1.3862943611198908;  // prob 0.8
+constexpr double kW_spurious_862e = 2.1972245773362196;  // prob 0.9
+constexpr double kW_spurious_6748 = 2.9444389791664394;  // prob 0.95
+constexpr double kW_spurious_5b4b = 2.1972245773362196;  // prob 0.9
 
 }  // namespace
 
@@ -30,71 +30,71 @@ const mln::Program& program() {
     p.add_predicate({"Corner", {kType_line, kType_line}, true, false, -1});
     p.add_predicate({"SameWall", {kType_line, kType_line}, true, false, -1});
     p.add_predicate({"Spurious", {kType_line}, true, false, -1});
-    // r1_corner (examples/segments/segments.ksm:19)
-    p.add_clause({"r1_corner",
+    // corner_ea01: hard !Corner(s, s)
+    p.add_clause({"corner_ea01",
                   {{"s", kType_line, false}},
                   {{kPred_Corner, true, {mln::Term::var(0), mln::Term::var(0)}}},
-                  mln::kHardWeight, true, "!Corner(s, s)", {"examples/segments/segments.ksm", 19}});
-    // r2_samewall (examples/segments/segments.ksm:20)
-    p.add_clause({"r2_samewall",
+                  mln::kHardWeight, true, "!Corner(s, s)", {"examples/segments/segments.ksm", 0}});
+    // samewall_f06e: hard !SameWall(s, s)
+    p.add_clause({"samewall_f06e",
                   {{"s", kType_line, false}},
                   {{kPred_SameWall, true, {mln::Term::var(0), mln::Term::var(0)}}},
-                  mln::kHardWeight, true, "!SameWall(s, s)", {"examples/segments/segments.ksm", 20}});
-    // r3_corner (examples/segments/segments.ksm:21)
-    p.add_clause({"r3_corner",
+                  mln::kHardWeight, true, "!SameWall(s, s)", {"examples/segments/segments.ksm", 0}});
+    // corner_38d5: hard Corner(a, b) => Corner(b, a)
+    p.add_clause({"corner_38d5",
                   {{"a", kType_line, false}, {"b", kType_line, false}},
                   {{kPred_Corner, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_Corner, false, {mln::Term::var(1), mln::Term::var(0)}}},
-                  mln::kHardWeight, true, "Corner(a, b) => Corner(b, a)", {"examples/segments/segments.ksm", 21}});
-    // r4_samewall (examples/segments/segments.ksm:22)
-    p.add_clause({"r4_samewall",
+                  mln::kHardWeight, true, "Corner(a, b) => Corner(b, a)", {"examples/segments/segments.ksm", 0}});
+    // samewall_b7e3: hard SameWall(a, b) => SameWall(b, a)
+    p.add_clause({"samewall_b7e3",
                   {{"a", kType_line, false}, {"b", kType_line, false}},
                   {{kPred_SameWall, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_SameWall, false, {mln::Term::var(1), mln::Term::var(0)}}},
-                  mln::kHardWeight, true, "SameWall(a, b) => SameWall(b, a)", {"examples/segments/segments.ksm", 22}});
-    // r5_corner (examples/segments/segments.ksm:24)
-    p.add_clause({"r5_corner",
+                  mln::kHardWeight, true, "SameWall(a, b) => SameWall(b, a)", {"examples/segments/segments.ksm", 0}});
+    // corner_4824: hard !touching(a, b) => !Corner(a, b)
+    p.add_clause({"corner_4824",
                   {{"a", kType_line, false}, {"b", kType_line, false}},
                   {{kPred_touching, false, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_Corner, true, {mln::Term::var(0), mln::Term::var(1)}}},
-                  mln::kHardWeight, true, "!touching(a, b) => !Corner(a, b)", {"examples/segments/segments.ksm", 24}});
-    // r6_samewall (examples/segments/segments.ksm:25)
-    p.add_clause({"r6_samewall",
+                  mln::kHardWeight, true, "!touching(a, b) => !Corner(a, b)", {"examples/segments/segments.ksm", 0}});
+    // samewall_b50f: hard !parallel(a, b) => !SameWall(a, b)
+    p.add_clause({"samewall_b50f",
                   {{"a", kType_line, false}, {"b", kType_line, false}},
                   {{kPred_parallel, false, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_SameWall, true, {mln::Term::var(0), mln::Term::var(1)}}},
-                  mln::kHardWeight, true, "!parallel(a, b) => !SameWall(a, b)", {"examples/segments/segments.ksm", 25}});
-    // r7_corner (examples/segments/segments.ksm:26)
-    p.add_clause({"r7_corner",
+                  mln::kHardWeight, true, "!parallel(a, b) => !SameWall(a, b)", {"examples/segments/segments.ksm", 0}});
+    // corner_8878: touching(a, b) ^ perpendicular(a, b) => Corner(a, b)
+    p.add_clause({"corner_8878",
                   {{"a", kType_line, false}, {"b", kType_line, false}},
                   {{kPred_touching, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_perpendicular, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_Corner, false, {mln::Term::var(0), mln::Term::var(1)}}},
-                  kW_r7_corner, false, "touching(a, b) ^ perpendicular(a, b) => Corner(a, b)", {"examples/segments/segments.ksm", 26}});
-    // r8_samewall (examples/segments/segments.ksm:27)
-    p.add_clause({"r8_samewall",
+                  kW_corner_8878, false, "touching(a, b) ^ perpendicular(a, b) => Corner(a, b)", {"examples/segments/segments.ksm", 0}});
+    // samewall_1a71: parallel(a, b) ^ close(a, b) => SameWall(a, b)
+    p.add_clause({"samewall_1a71",
                   {{"a", kType_line, false}, {"b", kType_line, false}},
                   {{kPred_parallel, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_close, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_SameWall, false, {mln::Term::var(0), mln::Term::var(1)}}},
-                  kW_r8_samewall, false, "parallel(a, b) ^ close(a, b) => SameWall(a, b)", {"examples/segments/segments.ksm", 27}});
-    // r9_samewall (examples/segments/segments.ksm:28)
-    p.add_clause({"r9_samewall",
+                  kW_samewall_1a71, false, "parallel(a, b) ^ close(a, b) => SameWall(a, b)", {"examples/segments/segments.ksm", 0}});
+    // samewall_4ee6: touching(a, b) ^ parallel(a, b) => SameWall(a, b)
+    p.add_clause({"samewall_4ee6",
                   {{"a", kType_line, false}, {"b", kType_line, false}},
                   {{kPred_touching, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_parallel, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_SameWall, false, {mln::Term::var(0), mln::Term::var(1)}}},
-                  kW_r9_samewall, false, "touching(a, b) ^ parallel(a, b) => SameWall(a, b)", {"examples/segments/segments.ksm", 28}});
-    // r10_spurious (examples/segments/segments.ksm:31)
-    p.add_clause({"r10_spurious",
+                  kW_samewall_4ee6, false, "touching(a, b) ^ parallel(a, b) => SameWall(a, b)", {"examples/segments/segments.ksm", 0}});
+    // spurious_18de: short(s) => Spurious(s)
+    p.add_clause({"spurious_18de",
                   {{"s", kType_line, false}},
                   {{kPred_short, true, {mln::Term::var(0)}}, {kPred_Spurious, false, {mln::Term::var(0)}}},
-                  kW_r10_spurious, false, "short(s) => Spurious(s)", {"examples/segments/segments.ksm", 31}});
-    // r11_spurious (examples/segments/segments.ksm:32)
-    p.add_clause({"r11_spurious",
+                  kW_spurious_18de, false, "short(s) => Spurious(s)", {"examples/segments/segments.ksm", 0}});
+    // spurious_862e: !Spurious(s)
+    p.add_clause({"spurious_862e",
                   {{"s", kType_line, false}},
                   {{kPred_Spurious, true, {mln::Term::var(0)}}},
-                  kW_r11_spurious, false, "!Spurious(s)", {"examples/segments/segments.ksm", 32}});
-    // r12_spurious (examples/segments/segments.ksm:33)
-    p.add_clause({"r12_spurious",
+                  kW_spurious_862e, false, "!Spurious(s)", {"examples/segments/segments.ksm", 0}});
+    // spurious_6748: touching(a, b) ^ perpendicular(a, b) => !Spurious(a)
+    p.add_clause({"spurious_6748",
                   {{"a", kType_line, false}, {"b", kType_line, false}},
                   {{kPred_touching, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_perpendicular, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_Spurious, true, {mln::Term::var(0)}}},
-                  kW_r12_spurious, false, "touching(a, b) ^ perpendicular(a, b) => !Spurious(a)", {"examples/segments/segments.ksm", 33}});
-    // r13_spurious (examples/segments/segments.ksm:34)
-    p.add_clause({"r13_spurious",
+                  kW_spurious_6748, false, "touching(a, b) ^ perpendicular(a, b) => !Spurious(a)", {"examples/segments/segments.ksm", 0}});
+    // spurious_5b4b: parallel(a, b) ^ close(a, b) => !Spurious(a)
+    p.add_clause({"spurious_5b4b",
                   {{"a", kType_line, false}, {"b", kType_line, false}},
                   {{kPred_parallel, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_close, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_Spurious, true, {mln::Term::var(0)}}},
-                  kW_r13_spurious, false, "parallel(a, b) ^ close(a, b) => !Spurious(a)", {"examples/segments/segments.ksm", 34}});
+                  kW_spurious_5b4b, false, "parallel(a, b) ^ close(a, b) => !Spurious(a)", {"examples/segments/segments.ksm", 0}});
     return p;
   }();
   return p;
@@ -107,54 +107,54 @@ mln::Domain make_domain() {
 
 namespace {
 
-// r1_corner (examples/segments/segments.ksm:19): hard !Corner(s, s)
-void ground_r1_corner(mln::FactorContext& g) {
+// corner_ea01: hard !Corner(s, s)
+void ground_corner_ea01(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_line = g.size(kType_line);
   for (std::int32_t v_s = 0; v_s < n_line; ++v_s) {
     g.begin();
     if (g.query(kPred_Corner, std::int64_t{v_s} * n_line + v_s, true)) continue;  // !Corner(s, s)
-    g.hard(0, {v_s});
+    g.hard(clause, {v_s});
   }
 }
 
-// r2_samewall (examples/segments/segments.ksm:20): hard !SameWall(s, s)
-void ground_r2_samewall(mln::FactorContext& g) {
+// samewall_f06e: hard !SameWall(s, s)
+void ground_samewall_f06e(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_line = g.size(kType_line);
   for (std::int32_t v_s = 0; v_s < n_line; ++v_s) {
     g.begin();
     if (g.query(kPred_SameWall, std::int64_t{v_s} * n_line + v_s, true)) continue;  // !SameWall(s, s)
-    g.hard(1, {v_s});
+    g.hard(clause, {v_s});
   }
 }
 
-// r3_corner (examples/segments/segments.ksm:21): hard Corner(a, b) => Corner(b, a)
-void ground_r3_corner(mln::FactorContext& g) {
+// corner_38d5: hard Corner(a, b) => Corner(b, a)
+void ground_corner_38d5(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_line = g.size(kType_line);
   for (std::int32_t v_a = 0; v_a < n_line; ++v_a) {
     for (std::int32_t v_b = 0; v_b < n_line; ++v_b) {
       g.begin();
       if (g.query(kPred_Corner, std::int64_t{v_a} * n_line + v_b, true)) continue;  // !Corner(a, b)
       if (g.query(kPred_Corner, std::int64_t{v_b} * n_line + v_a, false)) continue;  // Corner(b, a)
-      g.hard(2, {v_a, v_b});
+      g.hard(clause, {v_a, v_b});
     }
   }
 }
 
-// r4_samewall (examples/segments/segments.ksm:22): hard SameWall(a, b) => SameWall(b, a)
-void ground_r4_samewall(mln::FactorContext& g) {
+// samewall_b7e3: hard SameWall(a, b) => SameWall(b, a)
+void ground_samewall_b7e3(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_line = g.size(kType_line);
   for (std::int32_t v_a = 0; v_a < n_line; ++v_a) {
     for (std::int32_t v_b = 0; v_b < n_line; ++v_b) {
       g.begin();
       if (g.query(kPred_SameWall, std::int64_t{v_a} * n_line + v_b, true)) continue;  // !SameWall(a, b)
       if (g.query(kPred_SameWall, std::int64_t{v_b} * n_line + v_a, false)) continue;  // SameWall(b, a)
-      g.hard(3, {v_a, v_b});
+      g.hard(clause, {v_a, v_b});
     }
   }
 }
 
-// r5_corner (examples/segments/segments.ksm:24): hard !touching(a, b) => !Corner(a, b)
-void ground_r5_corner(mln::FactorContext& g) {
+// corner_4824: hard !touching(a, b) => !Corner(a, b)
+void ground_corner_4824(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_line = g.size(kType_line);
   for (std::int32_t v_a = 0; v_a < n_line; ++v_a) {
     for (std::int32_t v_b = 0; v_b < n_line; ++v_b) {
@@ -163,13 +163,13 @@ void ground_r5_corner(mln::FactorContext& g) {
       }
       g.begin();
       if (g.query(kPred_Corner, std::int64_t{v_a} * n_line + v_b, true)) continue;  // !Corner(a, b)
-      g.hard(4, {v_a, v_b});
+      g.hard(clause, {v_a, v_b});
     }
   }
 }
 
-// r6_samewall (examples/segments/segments.ksm:25): hard !parallel(a, b) => !SameWall(a, b)
-void ground_r6_samewall(mln::FactorContext& g) {
+// samewall_b50f: hard !parallel(a, b) => !SameWall(a, b)
+void ground_samewall_b50f(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_line = g.size(kType_line);
   for (std::int32_t v_a = 0; v_a < n_line; ++v_a) {
     for (std::int32_t v_b = 0; v_b < n_line; ++v_b) {
@@ -178,131 +178,131 @@ void ground_r6_samewall(mln::FactorContext& g) {
       }
       g.begin();
       if (g.query(kPred_SameWall, std::int64_t{v_a} * n_line + v_b, true)) continue;  // !SameWall(a, b)
-      g.hard(5, {v_a, v_b});
+      g.hard(clause, {v_a, v_b});
     }
   }
 }
 
-// r7_corner (examples/segments/segments.ksm:26): touching(a, b) ^ perpendicular(a, b) => Corner(a, b)
-void ground_r7_corner(mln::FactorContext& g) {
+// corner_8878: touching(a, b) ^ perpendicular(a, b) => Corner(a, b)
+void ground_corner_8878(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_line = g.size(kType_line);
   for (std::int32_t v_a = 0; v_a < n_line; ++v_a) {
     for (std::int32_t v_b = 0; v_b < n_line; ++v_b) {
       if (!g.ev(kPred_touching, std::int64_t{v_a} * n_line + v_b)) {  // !touching(a, b)
-        g.satisfied(kW_r7_corner);
+        g.satisfied(kW_corner_8878);
         continue;
       }
       if (!g.ev(kPred_perpendicular, std::int64_t{v_a} * n_line + v_b)) {  // !perpendicular(a, b)
-        g.satisfied(kW_r7_corner);
+        g.satisfied(kW_corner_8878);
         continue;
       }
       g.begin();
-      if (g.query(kPred_Corner, std::int64_t{v_a} * n_line + v_b, false)) { g.satisfied(kW_r7_corner); continue; }  // Corner(a, b)
-      g.soft(kW_r7_corner, 6);
+      if (g.query(kPred_Corner, std::int64_t{v_a} * n_line + v_b, false)) { g.satisfied(kW_corner_8878); continue; }  // Corner(a, b)
+      g.soft(kW_corner_8878, clause);
     }
   }
 }
 
-// r8_samewall (examples/segments/segments.ksm:27): parallel(a, b) ^ close(a, b) => SameWall(a, b)
-void ground_r8_samewall(mln::FactorContext& g) {
+// samewall_1a71: parallel(a, b) ^ close(a, b) => SameWall(a, b)
+void ground_samewall_1a71(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_line = g.size(kType_line);
   for (std::int32_t v_a = 0; v_a < n_line; ++v_a) {
     for (std::int32_t v_b = 0; v_b < n_line; ++v_b) {
       if (!g.ev(kPred_parallel, std::int64_t{v_a} * n_line + v_b)) {  // !parallel(a, b)
-        g.satisfied(kW_r8_samewall);
+        g.satisfied(kW_samewall_1a71);
         continue;
       }
       if (!g.ev(kPred_close, std::int64_t{v_a} * n_line + v_b)) {  // !close(a, b)
-        g.satisfied(kW_r8_samewall);
+        g.satisfied(kW_samewall_1a71);
         continue;
       }
       g.begin();
-      if (g.query(kPred_SameWall, std::int64_t{v_a} * n_line + v_b, false)) { g.satisfied(kW_r8_samewall); continue; }  // SameWall(a, b)
-      g.soft(kW_r8_samewall, 7);
+      if (g.query(kPred_SameWall, std::int64_t{v_a} * n_line + v_b, false)) { g.satisfied(kW_samewall_1a71); continue; }  // SameWall(a, b)
+      g.soft(kW_samewall_1a71, clause);
     }
   }
 }
 
-// r9_samewall (examples/segments/segments.ksm:28): touching(a, b) ^ parallel(a, b) => SameWall(a, b)
-void ground_r9_samewall(mln::FactorContext& g) {
+// samewall_4ee6: touching(a, b) ^ parallel(a, b) => SameWall(a, b)
+void ground_samewall_4ee6(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_line = g.size(kType_line);
   for (std::int32_t v_a = 0; v_a < n_line; ++v_a) {
     for (std::int32_t v_b = 0; v_b < n_line; ++v_b) {
       if (!g.ev(kPred_touching, std::int64_t{v_a} * n_line + v_b)) {  // !touching(a, b)
-        g.satisfied(kW_r9_samewall);
+        g.satisfied(kW_samewall_4ee6);
         continue;
       }
       if (!g.ev(kPred_parallel, std::int64_t{v_a} * n_line + v_b)) {  // !parallel(a, b)
-        g.satisfied(kW_r9_samewall);
+        g.satisfied(kW_samewall_4ee6);
         continue;
       }
       g.begin();
-      if (g.query(kPred_SameWall, std::int64_t{v_a} * n_line + v_b, false)) { g.satisfied(kW_r9_samewall); continue; }  // SameWall(a, b)
-      g.soft(kW_r9_samewall, 8);
+      if (g.query(kPred_SameWall, std::int64_t{v_a} * n_line + v_b, false)) { g.satisfied(kW_samewall_4ee6); continue; }  // SameWall(a, b)
+      g.soft(kW_samewall_4ee6, clause);
     }
   }
 }
 
-// r10_spurious (examples/segments/segments.ksm:31): short(s) => Spurious(s)
-void ground_r10_spurious(mln::FactorContext& g) {
+// spurious_18de: short(s) => Spurious(s)
+void ground_spurious_18de(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_line = g.size(kType_line);
   for (std::int32_t v_s = 0; v_s < n_line; ++v_s) {
     if (!g.ev(kPred_short, v_s)) {  // !short(s)
-      g.satisfied(kW_r10_spurious);
+      g.satisfied(kW_spurious_18de);
       continue;
     }
     g.begin();
-    if (g.query(kPred_Spurious, v_s, false)) { g.satisfied(kW_r10_spurious); continue; }  // Spurious(s)
-    g.soft(kW_r10_spurious, 9);
+    if (g.query(kPred_Spurious, v_s, false)) { g.satisfied(kW_spurious_18de); continue; }  // Spurious(s)
+    g.soft(kW_spurious_18de, clause);
   }
 }
 
-// r11_spurious (examples/segments/segments.ksm:32): !Spurious(s)
-void ground_r11_spurious(mln::FactorContext& g) {
+// spurious_862e: !Spurious(s)
+void ground_spurious_862e(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_line = g.size(kType_line);
   for (std::int32_t v_s = 0; v_s < n_line; ++v_s) {
     g.begin();
-    if (g.query(kPred_Spurious, v_s, true)) { g.satisfied(kW_r11_spurious); continue; }  // !Spurious(s)
-    g.soft(kW_r11_spurious, 10);
+    if (g.query(kPred_Spurious, v_s, true)) { g.satisfied(kW_spurious_862e); continue; }  // !Spurious(s)
+    g.soft(kW_spurious_862e, clause);
   }
 }
 
-// r12_spurious (examples/segments/segments.ksm:33): touching(a, b) ^ perpendicular(a, b) => !Spurious(a)
-void ground_r12_spurious(mln::FactorContext& g) {
+// spurious_6748: touching(a, b) ^ perpendicular(a, b) => !Spurious(a)
+void ground_spurious_6748(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_line = g.size(kType_line);
   for (std::int32_t v_a = 0; v_a < n_line; ++v_a) {
     for (std::int32_t v_b = 0; v_b < n_line; ++v_b) {
       if (!g.ev(kPred_touching, std::int64_t{v_a} * n_line + v_b)) {  // !touching(a, b)
-        g.satisfied(kW_r12_spurious);
+        g.satisfied(kW_spurious_6748);
         continue;
       }
       if (!g.ev(kPred_perpendicular, std::int64_t{v_a} * n_line + v_b)) {  // !perpendicular(a, b)
-        g.satisfied(kW_r12_spurious);
+        g.satisfied(kW_spurious_6748);
         continue;
       }
       g.begin();
-      if (g.query(kPred_Spurious, v_a, true)) { g.satisfied(kW_r12_spurious); continue; }  // !Spurious(a)
-      g.soft(kW_r12_spurious, 11);
+      if (g.query(kPred_Spurious, v_a, true)) { g.satisfied(kW_spurious_6748); continue; }  // !Spurious(a)
+      g.soft(kW_spurious_6748, clause);
     }
   }
 }
 
-// r13_spurious (examples/segments/segments.ksm:34): parallel(a, b) ^ close(a, b) => !Spurious(a)
-void ground_r13_spurious(mln::FactorContext& g) {
+// spurious_5b4b: parallel(a, b) ^ close(a, b) => !Spurious(a)
+void ground_spurious_5b4b(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_line = g.size(kType_line);
   for (std::int32_t v_a = 0; v_a < n_line; ++v_a) {
     for (std::int32_t v_b = 0; v_b < n_line; ++v_b) {
       if (!g.ev(kPred_parallel, std::int64_t{v_a} * n_line + v_b)) {  // !parallel(a, b)
-        g.satisfied(kW_r13_spurious);
+        g.satisfied(kW_spurious_5b4b);
         continue;
       }
       if (!g.ev(kPred_close, std::int64_t{v_a} * n_line + v_b)) {  // !close(a, b)
-        g.satisfied(kW_r13_spurious);
+        g.satisfied(kW_spurious_5b4b);
         continue;
       }
       g.begin();
-      if (g.query(kPred_Spurious, v_a, true)) { g.satisfied(kW_r13_spurious); continue; }  // !Spurious(a)
-      g.soft(kW_r13_spurious, 12);
+      if (g.query(kPred_Spurious, v_a, true)) { g.satisfied(kW_spurious_5b4b); continue; }  // !Spurious(a)
+      g.soft(kW_spurious_5b4b, clause);
     }
   }
 }
@@ -312,19 +312,20 @@ void ground_r13_spurious(mln::FactorContext& g) {
 mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) {
   mln::Grounding grounding = mln::prepare_grounding(program(), domain, evidence);
   mln::FactorContext g(grounding, evidence);
-  ground_r1_corner(g);
-  ground_r2_samewall(g);
-  ground_r3_corner(g);
-  ground_r4_samewall(g);
-  ground_r5_corner(g);
-  ground_r6_samewall(g);
-  ground_r7_corner(g);
-  ground_r8_samewall(g);
-  ground_r9_samewall(g);
-  ground_r10_spurious(g);
-  ground_r11_spurious(g);
-  ground_r12_spurious(g);
-  ground_r13_spurious(g);
+  std::int32_t clause = 0;  // clause index in program() order
+  ground_corner_ea01(g, clause++);
+  ground_samewall_f06e(g, clause++);
+  ground_corner_38d5(g, clause++);
+  ground_samewall_b7e3(g, clause++);
+  ground_corner_4824(g, clause++);
+  ground_samewall_b50f(g, clause++);
+  ground_corner_8878(g, clause++);
+  ground_samewall_1a71(g, clause++);
+  ground_samewall_4ee6(g, clause++);
+  ground_spurious_18de(g, clause++);
+  ground_spurious_862e(g, clause++);
+  ground_spurious_6748(g, clause++);
+  ground_spurious_5b4b(g, clause++);
   return grounding;
 }
 

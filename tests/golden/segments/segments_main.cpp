@@ -6,6 +6,5 @@
 
 int main(int argc, char** argv) {
   return ksmc::runtime::cli::run_domain_main(
-      argc, argv,
-      ksmc::stdlib::segments::kit::domain_spec(ksmc_generated::segments::domain_config(), ksmc_generated::segments::mln_binding()));
+      argc, argv, ksmc::stdlib::segments::kit::domain_spec(ksmc_generated::segments::binding()));
 }

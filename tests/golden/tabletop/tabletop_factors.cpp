@@ -8,18 +8,18 @@ namespace {
 namespace mln = ksmc::runtime::mln;
 
 // Rule weights as written in the domain file (`prob p` is the log-odds log(p / (1 - p))).
-constexpr double kW_r11_hidden = 0.8472978603872034;  // prob 0.7
-constexpr double kW_r12_supportive = 2.1972245773362196;  // prob 0.9
-constexpr double kW_r13_falseest_hidden = 2.1972245773362196;  // prob 0.9
-constexpr double kW_r14_falseest = 2.1972245773362196;  // prob 0.9
-constexpr double kW_r15_falseest = 0.8472978603872034;  // prob 0.7
-constexpr double kW_r16_falseest = 2.1972245773362196;  // prob 0.9
-constexpr double kW_r17_supported = 2.1972245773362196;  // prob 0.9
-constexpr double kW_r18_supported_hidden_falseest = 2.1972245773362196;  // prob 0.9
-constexpr double kW_r19_falseest = 2.1972245773362196;  // prob 0.9
-constexpr double kW_r20_hidden = 2.1972245773362196;  // prob 0.9
-constexpr double kW_r21_falseest = 0.8472978603872034;  // prob 0.7
-constexpr double kW_r22_hidden = 0.8472978603872034;  // prob 0.7
+constexpr double kW_hidden_731d = 0.8472978603872034;  // prob 0.7
+constexpr double kW_supportive_1c0b = 2.1972245773362196;  // prob 0.9
+constexpr double kW_falseest_hidden_e4b9 = 2.1972245773362196;  // prob 0.9
+constexpr double kW_falseest_b9fd = 2.1972245773362196;  // prob 0.9
+constexpr double kW_falseest_7939 = 0.8472978603872034;  // prob 0.7
+constexpr double kW_falseest_a837 = 2.1972245773362196;  // prob 0.9
+constexpr double kW_supported_6fcc = 2.1972245773362196;  // prob 0.9
+constexpr double kW_supported_hidden_falseest_af4c = 2.1972245773362196;  // prob 0.9
+constexpr double kW_falseest_b00b = 2.1972245773362196;  // prob 0.9
+constexpr double kW_hidden_8a9f = 2.1972245773362196;  // prob 0.9
+constexpr double kW_falseest_317c = 0.8472978603872034;  // prob 0.7
+constexpr double kW_hidden_5734 = 0.8472978603872034;  // prob 0.7
 
 }  // namespace
 
@@ -37,120 +37,120 @@ const mln::Program& program() {
     p.add_predicate({"supportive", {kType_object}, true, false, -1});
     p.add_predicate({"hidden", {kType_object}, true, false, -1});
     p.add_predicate({"falseEst", {kType_object}, true, false, -1});
-    // r1_higher (domains/tabletop.ksm:17)
-    p.add_clause({"r1_higher",
+    // higher_95b7: hard !higher(o, o)
+    p.add_clause({"higher_95b7",
                   {{"o", kType_object, false}},
                   {{kPred_higher, true, {mln::Term::var(0), mln::Term::var(0)}}},
-                  mln::kHardWeight, true, "!higher(o, o)", {"domains/tabletop.ksm", 17}});
-    // r2_intersect (domains/tabletop.ksm:18)
-    p.add_clause({"r2_intersect",
+                  mln::kHardWeight, true, "!higher(o, o)", {"domains/tabletop.ksm", 0}});
+    // intersect_ce12: hard !intersect(o, o)
+    p.add_clause({"intersect_ce12",
                   {{"o", kType_object, false}},
                   {{kPred_intersect, true, {mln::Term::var(0), mln::Term::var(0)}}},
-                  mln::kHardWeight, true, "!intersect(o, o)", {"domains/tabletop.ksm", 18}});
-    // r3_contact (domains/tabletop.ksm:19)
-    p.add_clause({"r3_contact",
+                  mln::kHardWeight, true, "!intersect(o, o)", {"domains/tabletop.ksm", 0}});
+    // contact_2dc4: hard !contact(o, o)
+    p.add_clause({"contact_2dc4",
                   {{"o", kType_object, false}},
                   {{kPred_contact, true, {mln::Term::var(0), mln::Term::var(0)}}},
-                  mln::kHardWeight, true, "!contact(o, o)", {"domains/tabletop.ksm", 19}});
-    // r4_contact (domains/tabletop.ksm:20)
-    p.add_clause({"r4_contact",
+                  mln::kHardWeight, true, "!contact(o, o)", {"domains/tabletop.ksm", 0}});
+    // contact_5609: hard contact(a, b) => contact(b, a)
+    p.add_clause({"contact_5609",
                   {{"a", kType_object, false}, {"b", kType_object, false}},
                   {{kPred_contact, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_contact, false, {mln::Term::var(1), mln::Term::var(0)}}},
-                  mln::kHardWeight, true, "contact(a, b) => contact(b, a)", {"domains/tabletop.ksm", 20}});
-    // r5_intersect (domains/tabletop.ksm:21)
-    p.add_clause({"r5_intersect",
+                  mln::kHardWeight, true, "contact(a, b) => contact(b, a)", {"domains/tabletop.ksm", 0}});
+    // intersect_109c: hard intersect(a, b) => intersect(b, a)
+    p.add_clause({"intersect_109c",
                   {{"a", kType_object, false}, {"b", kType_object, false}},
                   {{kPred_intersect, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_intersect, false, {mln::Term::var(1), mln::Term::var(0)}}},
-                  mln::kHardWeight, true, "intersect(a, b) => intersect(b, a)", {"domains/tabletop.ksm", 21}});
-    // r6_higher (domains/tabletop.ksm:22)
-    p.add_clause({"r6_higher",
+                  mln::kHardWeight, true, "intersect(a, b) => intersect(b, a)", {"domains/tabletop.ksm", 0}});
+    // higher_3010: hard higher(a, b) => !higher(b, a)
+    p.add_clause({"higher_3010",
                   {{"a", kType_object, false}, {"b", kType_object, false}},
                   {{kPred_higher, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_higher, true, {mln::Term::var(1), mln::Term::var(0)}}},
-                  mln::kHardWeight, true, "higher(a, b) => !higher(b, a)", {"domains/tabletop.ksm", 22}});
-    // r7_falseest (domains/tabletop.ksm:23)
-    p.add_clause({"r7_falseest",
+                  mln::kHardWeight, true, "higher(a, b) => !higher(b, a)", {"domains/tabletop.ksm", 0}});
+    // falseest_5bb3: hard table(o) => !falseEst(o)
+    p.add_clause({"falseest_5bb3",
                   {{"o", kType_object, false}},
                   {{kPred_table, true, {mln::Term::var(0)}}, {kPred_falseEst, true, {mln::Term::var(0)}}},
-                  mln::kHardWeight, true, "table(o) => !falseEst(o)", {"domains/tabletop.ksm", 23}});
-    // r8_hidden (domains/tabletop.ksm:24)
-    p.add_clause({"r8_hidden",
+                  mln::kHardWeight, true, "table(o) => !falseEst(o)", {"domains/tabletop.ksm", 0}});
+    // hidden_c8f6: hard table(o) => !hidden(o)
+    p.add_clause({"hidden_c8f6",
                   {{"o", kType_object, false}},
                   {{kPred_table, true, {mln::Term::var(0)}}, {kPred_hidden, true, {mln::Term::var(0)}}},
-                  mln::kHardWeight, true, "table(o) => !hidden(o)", {"domains/tabletop.ksm", 24}});
-    // r9_stable (domains/tabletop.ksm:25)
-    p.add_clause({"r9_stable",
+                  mln::kHardWeight, true, "table(o) => !hidden(o)", {"domains/tabletop.ksm", 0}});
+    // stable_d16a: hard table(o) => stable(o)
+    p.add_clause({"stable_d16a",
                   {{"o", kType_object, false}},
                   {{kPred_table, true, {mln::Term::var(0)}}, {kPred_stable, false, {mln::Term::var(0)}}},
-                  mln::kHardWeight, true, "table(o) => stable(o)", {"domains/tabletop.ksm", 25}});
-    // r10_supportive_supported (domains/tabletop.ksm:26)
-    p.add_clause({"r10_supportive_supported_c1",
+                  mln::kHardWeight, true, "table(o) => stable(o)", {"domains/tabletop.ksm", 0}});
+    // supportive_supported_c827: hard stable(a) ^ stable(b) ^ contact(a, b) ^ higher(a, b) => supportive(b) ^ supported(a)
+    p.add_clause({"supportive_supported_c827_c1",
                   {{"a", kType_object, false}, {"b", kType_object, false}},
                   {{kPred_stable, true, {mln::Term::var(0)}}, {kPred_stable, true, {mln::Term::var(1)}}, {kPred_contact, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_higher, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_supportive, false, {mln::Term::var(1)}}},
-                  mln::kHardWeight, true, "stable(a) ^ stable(b) ^ contact(a, b) ^ higher(a, b) => supportive(b) ^ supported(a)", {"domains/tabletop.ksm", 26}});
-    p.add_clause({"r10_supportive_supported_c2",
+                  mln::kHardWeight, true, "stable(a) ^ stable(b) ^ contact(a, b) ^ higher(a, b) => supportive(b) ^ supported(a)", {"domains/tabletop.ksm", 0}});
+    p.add_clause({"supportive_supported_c827_c2",
                   {{"a", kType_object, false}, {"b", kType_object, false}},
                   {{kPred_stable, true, {mln::Term::var(0)}}, {kPred_stable, true, {mln::Term::var(1)}}, {kPred_contact, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_higher, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_supported, false, {mln::Term::var(0)}}},
-                  mln::kHardWeight, true, "stable(a) ^ stable(b) ^ contact(a, b) ^ higher(a, b) => supportive(b) ^ supported(a)", {"domains/tabletop.ksm", 26}});
-    // r11_hidden (domains/tabletop.ksm:29)
-    p.add_clause({"r11_hidden",
+                  mln::kHardWeight, true, "stable(a) ^ stable(b) ^ contact(a, b) ^ higher(a, b) => supportive(b) ^ supported(a)", {"domains/tabletop.ksm", 0}});
+    // hidden_731d: supported(o) => !hidden(o)
+    p.add_clause({"hidden_731d",
                   {{"o", kType_object, false}},
                   {{kPred_supported, true, {mln::Term::var(0)}}, {kPred_hidden, true, {mln::Term::var(0)}}},
-                  kW_r11_hidden, false, "supported(o) => !hidden(o)", {"domains/tabletop.ksm", 29}});
-    // r12_supportive (domains/tabletop.ksm:30)
-    p.add_clause({"r12_supportive",
+                  kW_hidden_731d, false, "supported(o) => !hidden(o)", {"domains/tabletop.ksm", 0}});
+    // supportive_1c0b: !stable(o) => !supportive(o)
+    p.add_clause({"supportive_1c0b",
                   {{"o", kType_object, false}},
                   {{kPred_stable, false, {mln::Term::var(0)}}, {kPred_supportive, true, {mln::Term::var(0)}}},
-                  kW_r12_supportive, false, "!stable(o) => !supportive(o)", {"domains/tabletop.ksm", 30}});
-    // r13_falseest_hidden (domains/tabletop.ksm:31)
-    p.add_clause({"r13_falseest_hidden",
+                  kW_supportive_1c0b, false, "!stable(o) => !supportive(o)", {"domains/tabletop.ksm", 0}});
+    // falseest_hidden_e4b9: hover(o) => falseEst(o) v hidden(o)
+    p.add_clause({"falseest_hidden_e4b9",
                   {{"o", kType_object, false}},
                   {{kPred_hover, true, {mln::Term::var(0)}}, {kPred_falseEst, false, {mln::Term::var(0)}}, {kPred_hidden, false, {mln::Term::var(0)}}},
-                  kW_r13_falseest_hidden, false, "hover(o) => falseEst(o) v hidden(o)", {"domains/tabletop.ksm", 31}});
-    // r14_falseest (domains/tabletop.ksm:32)
-    p.add_clause({"r14_falseest",
+                  kW_falseest_hidden_e4b9, false, "hover(o) => falseEst(o) v hidden(o)", {"domains/tabletop.ksm", 0}});
+    // falseest_b9fd: intersect(a, b) => falseEst(a) v falseEst(b)
+    p.add_clause({"falseest_b9fd",
                   {{"a", kType_object, false}, {"b", kType_object, false}},
                   {{kPred_intersect, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_falseEst, false, {mln::Term::var(0)}}, {kPred_falseEst, false, {mln::Term::var(1)}}},
-                  kW_r14_falseest, false, "intersect(a, b) => falseEst(a) v falseEst(b)", {"domains/tabletop.ksm", 32}});
-    // r15_falseest (domains/tabletop.ksm:33)
-    p.add_clause({"r15_falseest",
+                  kW_falseest_b9fd, false, "intersect(a, b) => falseEst(a) v falseEst(b)", {"domains/tabletop.ksm", 0}});
+    // falseest_7939: supportive(o) => !falseEst(o)
+    p.add_clause({"falseest_7939",
                   {{"o", kType_object, false}},
                   {{kPred_supportive, true, {mln::Term::var(0)}}, {kPred_falseEst, true, {mln::Term::var(0)}}},
-                  kW_r15_falseest, false, "supportive(o) => !falseEst(o)", {"domains/tabletop.ksm", 33}});
-    // r16_falseest (domains/tabletop.ksm:34)
-    p.add_clause({"r16_falseest",
+                  kW_falseest_7939, false, "supportive(o) => !falseEst(o)", {"domains/tabletop.ksm", 0}});
+    // falseest_a837: stable(o) => !falseEst(o)
+    p.add_clause({"falseest_a837",
                   {{"o", kType_object, false}},
                   {{kPred_stable, true, {mln::Term::var(0)}}, {kPred_falseEst, true, {mln::Term::var(0)}}},
-                  kW_r16_falseest, false, "stable(o) => !falseEst(o)", {"domains/tabletop.ksm", 34}});
-    // r17_supported (domains/tabletop.ksm:41)
-    p.add_clause({"r17_supported",
+                  kW_falseest_a837, false, "stable(o) => !falseEst(o)", {"domains/tabletop.ksm", 0}});
+    // supported_6fcc: !supported(o)
+    p.add_clause({"supported_6fcc",
                   {{"o", kType_object, false}},
                   {{kPred_supported, true, {mln::Term::var(0)}}},
-                  kW_r17_supported, false, "!supported(o)", {"domains/tabletop.ksm", 41}});
-    // r18_supported_hidden_falseest (domains/tabletop.ksm:46)
-    p.add_clause({"r18_supported_hidden_falseest",
+                  kW_supported_6fcc, false, "!supported(o)", {"domains/tabletop.ksm", 0}});
+    // supported_hidden_falseest_af4c: stable(o) ^ !table(o) => supported(o) v hidden(o) v falseEst(o)
+    p.add_clause({"supported_hidden_falseest_af4c",
                   {{"o", kType_object, false}},
                   {{kPred_stable, true, {mln::Term::var(0)}}, {kPred_table, false, {mln::Term::var(0)}}, {kPred_supported, false, {mln::Term::var(0)}}, {kPred_hidden, false, {mln::Term::var(0)}}, {kPred_falseEst, false, {mln::Term::var(0)}}},
-                  kW_r18_supported_hidden_falseest, false, "stable(o) ^ !table(o) => supported(o) v hidden(o) v falseEst(o)", {"domains/tabletop.ksm", 46}});
-    // r19_falseest (domains/tabletop.ksm:49)
-    p.add_clause({"r19_falseest",
+                  kW_supported_hidden_falseest_af4c, false, "stable(o) ^ !table(o) => supported(o) v hidden(o) v falseEst(o)", {"domains/tabletop.ksm", 0}});
+    // falseest_b00b: intersect(a, b) ^ supported(b) ^ !supported(a) => falseEst(a)
+    p.add_clause({"falseest_b00b",
                   {{"a", kType_object, false}, {"b", kType_object, false}},
                   {{kPred_intersect, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_supported, true, {mln::Term::var(1)}}, {kPred_supported, false, {mln::Term::var(0)}}, {kPred_falseEst, false, {mln::Term::var(0)}}},
-                  kW_r19_falseest, false, "intersect(a, b) ^ supported(b) ^ !supported(a) => falseEst(a)", {"domains/tabletop.ksm", 49}});
-    // r20_hidden (domains/tabletop.ksm:53)
-    p.add_clause({"r20_hidden",
+                  kW_falseest_b00b, false, "intersect(a, b) ^ supported(b) ^ !supported(a) => falseEst(a)", {"domains/tabletop.ksm", 0}});
+    // hidden_8a9f: !stable(o) => !hidden(o)
+    p.add_clause({"hidden_8a9f",
                   {{"o", kType_object, false}},
                   {{kPred_stable, false, {mln::Term::var(0)}}, {kPred_hidden, true, {mln::Term::var(0)}}},
-                  kW_r20_hidden, false, "!stable(o) => !hidden(o)", {"domains/tabletop.ksm", 53}});
-    // r21_falseest (domains/tabletop.ksm:57)
-    p.add_clause({"r21_falseest",
+                  kW_hidden_8a9f, false, "!stable(o) => !hidden(o)", {"domains/tabletop.ksm", 0}});
+    // falseest_317c: !falseEst(o)
+    p.add_clause({"falseest_317c",
                   {{"o", kType_object, false}},
                   {{kPred_falseEst, true, {mln::Term::var(0)}}},
-                  kW_r21_falseest, false, "!falseEst(o)", {"domains/tabletop.ksm", 57}});
-    // r22_hidden (domains/tabletop.ksm:58)
-    p.add_clause({"r22_hidden",
+                  kW_falseest_317c, false, "!falseEst(o)", {"domains/tabletop.ksm", 0}});
+    // hidden_5734: !hidden(o)
+    p.add_clause({"hidden_5734",
                   {{"o", kType_object, false}},
                   {{kPred_hidden, true, {mln::Term::var(0)}}},
-                  kW_r22_hidden, false, "!hidden(o)", {"domains/tabletop.ksm", 58}});
+                  kW_hidden_5734, false, "!hidden(o)", {"domains/tabletop.ksm", 0}});
     return p;
   }();
   return p;
@@ -163,44 +163,44 @@ mln::Domain make_domain() {
 
 namespace {
 
-// r1_higher (domains/tabletop.ksm:17): hard !higher(o, o)
-void ground_r1_higher(mln::FactorContext& g) {
+// higher_95b7: hard !higher(o, o)
+void ground_higher_95b7(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_object = g.size(kType_object);
   for (std::int32_t v_o = 0; v_o < n_object; ++v_o) {
     if (!g.ev(kPred_higher, std::int64_t{v_o} * n_object + v_o)) {  // !higher(o, o)
       continue;
     }
     g.begin();
-    g.hard(0, {v_o});
+    g.hard(clause, {v_o});
   }
 }
 
-// r2_intersect (domains/tabletop.ksm:18): hard !intersect(o, o)
-void ground_r2_intersect(mln::FactorContext& g) {
+// intersect_ce12: hard !intersect(o, o)
+void ground_intersect_ce12(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_object = g.size(kType_object);
   for (std::int32_t v_o = 0; v_o < n_object; ++v_o) {
     if (!g.ev(kPred_intersect, std::int64_t{v_o} * n_object + v_o)) {  // !intersect(o, o)
       continue;
     }
     g.begin();
-    g.hard(1, {v_o});
+    g.hard(clause, {v_o});
   }
 }
 
-// r3_contact (domains/tabletop.ksm:19): hard !contact(o, o)
-void ground_r3_contact(mln::FactorContext& g) {
+// contact_2dc4: hard !contact(o, o)
+void ground_contact_2dc4(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_object = g.size(kType_object);
   for (std::int32_t v_o = 0; v_o < n_object; ++v_o) {
     if (!g.ev(kPred_contact, std::int64_t{v_o} * n_object + v_o)) {  // !contact(o, o)
       continue;
     }
     g.begin();
-    g.hard(2, {v_o});
+    g.hard(clause, {v_o});
   }
 }
 
-// r4_contact (domains/tabletop.ksm:20): hard contact(a, b) => contact(b, a)
-void ground_r4_contact(mln::FactorContext& g) {
+// contact_5609: hard contact(a, b) => contact(b, a)
+void ground_contact_5609(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_object = g.size(kType_object);
   for (std::int32_t v_a = 0; v_a < n_object; ++v_a) {
     for (std::int32_t v_b = 0; v_b < n_object; ++v_b) {
@@ -211,13 +211,13 @@ void ground_r4_contact(mln::FactorContext& g) {
         continue;
       }
       g.begin();
-      g.hard(3, {v_a, v_b});
+      g.hard(clause, {v_a, v_b});
     }
   }
 }
 
-// r5_intersect (domains/tabletop.ksm:21): hard intersect(a, b) => intersect(b, a)
-void ground_r5_intersect(mln::FactorContext& g) {
+// intersect_109c: hard intersect(a, b) => intersect(b, a)
+void ground_intersect_109c(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_object = g.size(kType_object);
   for (std::int32_t v_a = 0; v_a < n_object; ++v_a) {
     for (std::int32_t v_b = 0; v_b < n_object; ++v_b) {
@@ -228,13 +228,13 @@ void ground_r5_intersect(mln::FactorContext& g) {
         continue;
       }
       g.begin();
-      g.hard(4, {v_a, v_b});
+      g.hard(clause, {v_a, v_b});
     }
   }
 }
 
-// r6_higher (domains/tabletop.ksm:22): hard higher(a, b) => !higher(b, a)
-void ground_r6_higher(mln::FactorContext& g) {
+// higher_3010: hard higher(a, b) => !higher(b, a)
+void ground_higher_3010(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_object = g.size(kType_object);
   for (std::int32_t v_a = 0; v_a < n_object; ++v_a) {
     for (std::int32_t v_b = 0; v_b < n_object; ++v_b) {
@@ -245,13 +245,13 @@ void ground_r6_higher(mln::FactorContext& g) {
         continue;
       }
       g.begin();
-      g.hard(5, {v_a, v_b});
+      g.hard(clause, {v_a, v_b});
     }
   }
 }
 
-// r7_falseest (domains/tabletop.ksm:23): hard table(o) => !falseEst(o)
-void ground_r7_falseest(mln::FactorContext& g) {
+// falseest_5bb3: hard table(o) => !falseEst(o)
+void ground_falseest_5bb3(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_object = g.size(kType_object);
   for (std::int32_t v_o = 0; v_o < n_object; ++v_o) {
     if (!g.ev(kPred_table, v_o)) {  // !table(o)
@@ -259,12 +259,12 @@ void ground_r7_falseest(mln::FactorContext& g) {
     }
     g.begin();
     if (g.query(kPred_falseEst, v_o, true)) continue;  // !falseEst(o)
-    g.hard(6, {v_o});
+    g.hard(clause, {v_o});
   }
 }
 
-// r8_hidden (domains/tabletop.ksm:24): hard table(o) => !hidden(o)
-void ground_r8_hidden(mln::FactorContext& g) {
+// hidden_c8f6: hard table(o) => !hidden(o)
+void ground_hidden_c8f6(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_object = g.size(kType_object);
   for (std::int32_t v_o = 0; v_o < n_object; ++v_o) {
     if (!g.ev(kPred_table, v_o)) {  // !table(o)
@@ -272,12 +272,12 @@ void ground_r8_hidden(mln::FactorContext& g) {
     }
     g.begin();
     if (g.query(kPred_hidden, v_o, true)) continue;  // !hidden(o)
-    g.hard(7, {v_o});
+    g.hard(clause, {v_o});
   }
 }
 
-// r9_stable (domains/tabletop.ksm:25): hard table(o) => stable(o)
-void ground_r9_stable(mln::FactorContext& g) {
+// stable_d16a: hard table(o) => stable(o)
+void ground_stable_d16a(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_object = g.size(kType_object);
   for (std::int32_t v_o = 0; v_o < n_object; ++v_o) {
     if (!g.ev(kPred_table, v_o)) {  // !table(o)
@@ -287,13 +287,13 @@ void ground_r9_stable(mln::FactorContext& g) {
       continue;
     }
     g.begin();
-    g.hard(8, {v_o});
+    g.hard(clause, {v_o});
   }
 }
 
-// r10_supportive_supported (domains/tabletop.ksm:26): hard stable(a) ^ stable(b) ^ contact(a, b) ^ higher(a, b) => supportive(b) ^ supported(a)
+// supportive_supported_c827: hard stable(a) ^ stable(b) ^ contact(a, b) ^ higher(a, b) => supportive(b) ^ supported(a)
 // clause 1 of 2: !stable(a) v !stable(b) v !contact(a, b) v !higher(a, b) v supportive(b)
-void ground_r10_supportive_supported_c1(mln::FactorContext& g) {
+void ground_supportive_supported_c827_c1(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_object = g.size(kType_object);
   for (std::int32_t v_a = 0; v_a < n_object; ++v_a) {
     if (!g.ev(kPred_stable, v_a)) {  // !stable(a)
@@ -311,14 +311,14 @@ void ground_r10_supportive_supported_c1(mln::FactorContext& g) {
       }
       g.begin();
       if (g.query(kPred_supportive, v_b, false)) continue;  // supportive(b)
-      g.hard(9, {v_a, v_b});
+      g.hard(clause, {v_a, v_b});
     }
   }
 }
 
-// r10_supportive_supported (domains/tabletop.ksm:26): hard stable(a) ^ stable(b) ^ contact(a, b) ^ higher(a, b) => supportive(b) ^ supported(a)
+// supportive_supported_c827: hard stable(a) ^ stable(b) ^ contact(a, b) ^ higher(a, b) => supportive(b) ^ supported(a)
 // clause 2 of 2: !stable(a) v !stable(b) v !contact(a, b) v !higher(a, b) v supported(a)
-void ground_r10_supportive_supported_c2(mln::FactorContext& g) {
+void ground_supportive_supported_c827_c2(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_object = g.size(kType_object);
   for (std::int32_t v_a = 0; v_a < n_object; ++v_a) {
     if (!g.ev(kPred_stable, v_a)) {  // !stable(a)
@@ -336,172 +336,172 @@ void ground_r10_supportive_supported_c2(mln::FactorContext& g) {
       }
       g.begin();
       if (g.query(kPred_supported, v_a, false)) continue;  // supported(a)
-      g.hard(10, {v_a, v_b});
+      g.hard(clause, {v_a, v_b});
     }
   }
 }
 
-// r11_hidden (domains/tabletop.ksm:29): supported(o) => !hidden(o)
-void ground_r11_hidden(mln::FactorContext& g) {
+// hidden_731d: supported(o) => !hidden(o)
+void ground_hidden_731d(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_object = g.size(kType_object);
   for (std::int32_t v_o = 0; v_o < n_object; ++v_o) {
     g.begin();
-    if (g.query(kPred_supported, v_o, true)) { g.satisfied(kW_r11_hidden); continue; }  // !supported(o)
-    if (g.query(kPred_hidden, v_o, true)) { g.satisfied(kW_r11_hidden); continue; }  // !hidden(o)
-    g.soft(kW_r11_hidden, 11);
+    if (g.query(kPred_supported, v_o, true)) { g.satisfied(kW_hidden_731d); continue; }  // !supported(o)
+    if (g.query(kPred_hidden, v_o, true)) { g.satisfied(kW_hidden_731d); continue; }  // !hidden(o)
+    g.soft(kW_hidden_731d, clause);
   }
 }
 
-// r12_supportive (domains/tabletop.ksm:30): !stable(o) => !supportive(o)
-void ground_r12_supportive(mln::FactorContext& g) {
+// supportive_1c0b: !stable(o) => !supportive(o)
+void ground_supportive_1c0b(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_object = g.size(kType_object);
   for (std::int32_t v_o = 0; v_o < n_object; ++v_o) {
     if (g.ev(kPred_stable, v_o)) {  // stable(o)
-      g.satisfied(kW_r12_supportive);
+      g.satisfied(kW_supportive_1c0b);
       continue;
     }
     g.begin();
-    if (g.query(kPred_supportive, v_o, true)) { g.satisfied(kW_r12_supportive); continue; }  // !supportive(o)
-    g.soft(kW_r12_supportive, 12);
+    if (g.query(kPred_supportive, v_o, true)) { g.satisfied(kW_supportive_1c0b); continue; }  // !supportive(o)
+    g.soft(kW_supportive_1c0b, clause);
   }
 }
 
-// r13_falseest_hidden (domains/tabletop.ksm:31): hover(o) => falseEst(o) v hidden(o)
-void ground_r13_falseest_hidden(mln::FactorContext& g) {
+// falseest_hidden_e4b9: hover(o) => falseEst(o) v hidden(o)
+void ground_falseest_hidden_e4b9(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_object = g.size(kType_object);
   for (std::int32_t v_o = 0; v_o < n_object; ++v_o) {
     if (!g.ev(kPred_hover, v_o)) {  // !hover(o)
-      g.satisfied(kW_r13_falseest_hidden);
+      g.satisfied(kW_falseest_hidden_e4b9);
       continue;
     }
     g.begin();
-    if (g.query(kPred_falseEst, v_o, false)) { g.satisfied(kW_r13_falseest_hidden); continue; }  // falseEst(o)
-    if (g.query(kPred_hidden, v_o, false)) { g.satisfied(kW_r13_falseest_hidden); continue; }  // hidden(o)
-    g.soft(kW_r13_falseest_hidden, 13);
+    if (g.query(kPred_falseEst, v_o, false)) { g.satisfied(kW_falseest_hidden_e4b9); continue; }  // falseEst(o)
+    if (g.query(kPred_hidden, v_o, false)) { g.satisfied(kW_falseest_hidden_e4b9); continue; }  // hidden(o)
+    g.soft(kW_falseest_hidden_e4b9, clause);
   }
 }
 
-// r14_falseest (domains/tabletop.ksm:32): intersect(a, b) => falseEst(a) v falseEst(b)
-void ground_r14_falseest(mln::FactorContext& g) {
+// falseest_b9fd: intersect(a, b) => falseEst(a) v falseEst(b)
+void ground_falseest_b9fd(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_object = g.size(kType_object);
   for (std::int32_t v_a = 0; v_a < n_object; ++v_a) {
     for (std::int32_t v_b = 0; v_b < n_object; ++v_b) {
       if (!g.ev(kPred_intersect, std::int64_t{v_a} * n_object + v_b)) {  // !intersect(a, b)
-        g.satisfied(kW_r14_falseest);
+        g.satisfied(kW_falseest_b9fd);
         continue;
       }
       g.begin();
-      if (g.query(kPred_falseEst, v_a, false)) { g.satisfied(kW_r14_falseest); continue; }  // falseEst(a)
-      if (g.query(kPred_falseEst, v_b, false)) { g.satisfied(kW_r14_falseest); continue; }  // falseEst(b)
-      g.soft(kW_r14_falseest, 14);
+      if (g.query(kPred_falseEst, v_a, false)) { g.satisfied(kW_falseest_b9fd); continue; }  // falseEst(a)
+      if (g.query(kPred_falseEst, v_b, false)) { g.satisfied(kW_falseest_b9fd); continue; }  // falseEst(b)
+      g.soft(kW_falseest_b9fd, clause);
     }
   }
 }
 
-// r15_falseest (domains/tabletop.ksm:33): supportive(o) => !falseEst(o)
-void ground_r15_falseest(mln::FactorContext& g) {
+// falseest_7939: supportive(o) => !falseEst(o)
+void ground_falseest_7939(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_object = g.size(kType_object);
   for (std::int32_t v_o = 0; v_o < n_object; ++v_o) {
     g.begin();
-    if (g.query(kPred_supportive, v_o, true)) { g.satisfied(kW_r15_falseest); continue; }  // !supportive(o)
-    if (g.query(kPred_falseEst, v_o, true)) { g.satisfied(kW_r15_falseest); continue; }  // !falseEst(o)
-    g.soft(kW_r15_falseest, 15);
+    if (g.query(kPred_supportive, v_o, true)) { g.satisfied(kW_falseest_7939); continue; }  // !supportive(o)
+    if (g.query(kPred_falseEst, v_o, true)) { g.satisfied(kW_falseest_7939); continue; }  // !falseEst(o)
+    g.soft(kW_falseest_7939, clause);
   }
 }
 
-// r16_falseest (domains/tabletop.ksm:34): stable(o) => !falseEst(o)
-void ground_r16_falseest(mln::FactorContext& g) {
+// falseest_a837: stable(o) => !falseEst(o)
+void ground_falseest_a837(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_object = g.size(kType_object);
   for (std::int32_t v_o = 0; v_o < n_object; ++v_o) {
     if (!g.ev(kPred_stable, v_o)) {  // !stable(o)
-      g.satisfied(kW_r16_falseest);
+      g.satisfied(kW_falseest_a837);
       continue;
     }
     g.begin();
-    if (g.query(kPred_falseEst, v_o, true)) { g.satisfied(kW_r16_falseest); continue; }  // !falseEst(o)
-    g.soft(kW_r16_falseest, 16);
+    if (g.query(kPred_falseEst, v_o, true)) { g.satisfied(kW_falseest_a837); continue; }  // !falseEst(o)
+    g.soft(kW_falseest_a837, clause);
   }
 }
 
-// r17_supported (domains/tabletop.ksm:41): !supported(o)
-void ground_r17_supported(mln::FactorContext& g) {
+// supported_6fcc: !supported(o)
+void ground_supported_6fcc(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_object = g.size(kType_object);
   for (std::int32_t v_o = 0; v_o < n_object; ++v_o) {
     g.begin();
-    if (g.query(kPred_supported, v_o, true)) { g.satisfied(kW_r17_supported); continue; }  // !supported(o)
-    g.soft(kW_r17_supported, 17);
+    if (g.query(kPred_supported, v_o, true)) { g.satisfied(kW_supported_6fcc); continue; }  // !supported(o)
+    g.soft(kW_supported_6fcc, clause);
   }
 }
 
-// r18_supported_hidden_falseest (domains/tabletop.ksm:46): stable(o) ^ !table(o) => supported(o) v hidden(o) v falseEst(o)
-void ground_r18_supported_hidden_falseest(mln::FactorContext& g) {
+// supported_hidden_falseest_af4c: stable(o) ^ !table(o) => supported(o) v hidden(o) v falseEst(o)
+void ground_supported_hidden_falseest_af4c(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_object = g.size(kType_object);
   for (std::int32_t v_o = 0; v_o < n_object; ++v_o) {
     if (!g.ev(kPred_stable, v_o)) {  // !stable(o)
-      g.satisfied(kW_r18_supported_hidden_falseest);
+      g.satisfied(kW_supported_hidden_falseest_af4c);
       continue;
     }
     if (g.ev(kPred_table, v_o)) {  // table(o)
-      g.satisfied(kW_r18_supported_hidden_falseest);
+      g.satisfied(kW_supported_hidden_falseest_af4c);
       continue;
     }
     g.begin();
-    if (g.query(kPred_supported, v_o, false)) { g.satisfied(kW_r18_supported_hidden_falseest); continue; }  // supported(o)
-    if (g.query(kPred_hidden, v_o, false)) { g.satisfied(kW_r18_supported_hidden_falseest); continue; }  // hidden(o)
-    if (g.query(kPred_falseEst, v_o, false)) { g.satisfied(kW_r18_supported_hidden_falseest); continue; }  // falseEst(o)
-    g.soft(kW_r18_supported_hidden_falseest, 18);
+    if (g.query(kPred_supported, v_o, false)) { g.satisfied(kW_supported_hidden_falseest_af4c); continue; }  // supported(o)
+    if (g.query(kPred_hidden, v_o, false)) { g.satisfied(kW_supported_hidden_falseest_af4c); continue; }  // hidden(o)
+    if (g.query(kPred_falseEst, v_o, false)) { g.satisfied(kW_supported_hidden_falseest_af4c); continue; }  // falseEst(o)
+    g.soft(kW_supported_hidden_falseest_af4c, clause);
   }
 }
 
-// r19_falseest (domains/tabletop.ksm:49): intersect(a, b) ^ supported(b) ^ !supported(a) => falseEst(a)
-void ground_r19_falseest(mln::FactorContext& g) {
+// falseest_b00b: intersect(a, b) ^ supported(b) ^ !supported(a) => falseEst(a)
+void ground_falseest_b00b(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_object = g.size(kType_object);
   for (std::int32_t v_a = 0; v_a < n_object; ++v_a) {
     for (std::int32_t v_b = 0; v_b < n_object; ++v_b) {
       if (!g.ev(kPred_intersect, std::int64_t{v_a} * n_object + v_b)) {  // !intersect(a, b)
-        g.satisfied(kW_r19_falseest);
+        g.satisfied(kW_falseest_b00b);
         continue;
       }
       g.begin();
-      if (g.query(kPred_supported, v_b, true)) { g.satisfied(kW_r19_falseest); continue; }  // !supported(b)
-      if (g.query(kPred_supported, v_a, false)) { g.satisfied(kW_r19_falseest); continue; }  // supported(a)
-      if (g.query(kPred_falseEst, v_a, false)) { g.satisfied(kW_r19_falseest); continue; }  // falseEst(a)
-      g.soft(kW_r19_falseest, 19);
+      if (g.query(kPred_supported, v_b, true)) { g.satisfied(kW_falseest_b00b); continue; }  // !supported(b)
+      if (g.query(kPred_supported, v_a, false)) { g.satisfied(kW_falseest_b00b); continue; }  // supported(a)
+      if (g.query(kPred_falseEst, v_a, false)) { g.satisfied(kW_falseest_b00b); continue; }  // falseEst(a)
+      g.soft(kW_falseest_b00b, clause);
     }
   }
 }
 
-// r20_hidden (domains/tabletop.ksm:53): !stable(o) => !hidden(o)
-void ground_r20_hidden(mln::FactorContext& g) {
+// hidden_8a9f: !stable(o) => !hidden(o)
+void ground_hidden_8a9f(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_object = g.size(kType_object);
   for (std::int32_t v_o = 0; v_o < n_object; ++v_o) {
     if (g.ev(kPred_stable, v_o)) {  // stable(o)
-      g.satisfied(kW_r20_hidden);
+      g.satisfied(kW_hidden_8a9f);
       continue;
     }
     g.begin();
-    if (g.query(kPred_hidden, v_o, true)) { g.satisfied(kW_r20_hidden); continue; }  // !hidden(o)
-    g.soft(kW_r20_hidden, 20);
+    if (g.query(kPred_hidden, v_o, true)) { g.satisfied(kW_hidden_8a9f); continue; }  // !hidden(o)
+    g.soft(kW_hidden_8a9f, clause);
   }
 }
 
-// r21_falseest (domains/tabletop.ksm:57): !falseEst(o)
-void ground_r21_falseest(mln::FactorContext& g) {
+// falseest_317c: !falseEst(o)
+void ground_falseest_317c(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_object = g.size(kType_object);
   for (std::int32_t v_o = 0; v_o < n_object; ++v_o) {
     g.begin();
-    if (g.query(kPred_falseEst, v_o, true)) { g.satisfied(kW_r21_falseest); continue; }  // !falseEst(o)
-    g.soft(kW_r21_falseest, 21);
+    if (g.query(kPred_falseEst, v_o, true)) { g.satisfied(kW_falseest_317c); continue; }  // !falseEst(o)
+    g.soft(kW_falseest_317c, clause);
   }
 }
 
-// r22_hidden (domains/tabletop.ksm:58): !hidden(o)
-void ground_r22_hidden(mln::FactorContext& g) {
+// hidden_5734: !hidden(o)
+void ground_hidden_5734(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_object = g.size(kType_object);
   for (std::int32_t v_o = 0; v_o < n_object; ++v_o) {
     g.begin();
-    if (g.query(kPred_hidden, v_o, true)) { g.satisfied(kW_r22_hidden); continue; }  // !hidden(o)
-    g.soft(kW_r22_hidden, 22);
+    if (g.query(kPred_hidden, v_o, true)) { g.satisfied(kW_hidden_5734); continue; }  // !hidden(o)
+    g.soft(kW_hidden_5734, clause);
   }
 }
 
@@ -510,29 +510,30 @@ void ground_r22_hidden(mln::FactorContext& g) {
 mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) {
   mln::Grounding grounding = mln::prepare_grounding(program(), domain, evidence);
   mln::FactorContext g(grounding, evidence);
-  ground_r1_higher(g);
-  ground_r2_intersect(g);
-  ground_r3_contact(g);
-  ground_r4_contact(g);
-  ground_r5_intersect(g);
-  ground_r6_higher(g);
-  ground_r7_falseest(g);
-  ground_r8_hidden(g);
-  ground_r9_stable(g);
-  ground_r10_supportive_supported_c1(g);
-  ground_r10_supportive_supported_c2(g);
-  ground_r11_hidden(g);
-  ground_r12_supportive(g);
-  ground_r13_falseest_hidden(g);
-  ground_r14_falseest(g);
-  ground_r15_falseest(g);
-  ground_r16_falseest(g);
-  ground_r17_supported(g);
-  ground_r18_supported_hidden_falseest(g);
-  ground_r19_falseest(g);
-  ground_r20_hidden(g);
-  ground_r21_falseest(g);
-  ground_r22_hidden(g);
+  std::int32_t clause = 0;  // clause index in program() order
+  ground_higher_95b7(g, clause++);
+  ground_intersect_ce12(g, clause++);
+  ground_contact_2dc4(g, clause++);
+  ground_contact_5609(g, clause++);
+  ground_intersect_109c(g, clause++);
+  ground_higher_3010(g, clause++);
+  ground_falseest_5bb3(g, clause++);
+  ground_hidden_c8f6(g, clause++);
+  ground_stable_d16a(g, clause++);
+  ground_supportive_supported_c827_c1(g, clause++);
+  ground_supportive_supported_c827_c2(g, clause++);
+  ground_hidden_731d(g, clause++);
+  ground_supportive_1c0b(g, clause++);
+  ground_falseest_hidden_e4b9(g, clause++);
+  ground_falseest_b9fd(g, clause++);
+  ground_falseest_7939(g, clause++);
+  ground_falseest_a837(g, clause++);
+  ground_supported_6fcc(g, clause++);
+  ground_supported_hidden_falseest_af4c(g, clause++);
+  ground_falseest_b00b(g, clause++);
+  ground_hidden_8a9f(g, clause++);
+  ground_falseest_317c(g, clause++);
+  ground_hidden_5734(g, clause++);
   return grounding;
 }
 

@@ -6,6 +6,5 @@
 
 int main(int argc, char** argv) {
   return ksmc::runtime::cli::run_domain_main(
-      argc, argv,
-      ksmc::stdlib::tabletop::kit::domain_spec(ksmc_generated::tabletop::domain_config(), ksmc_generated::tabletop::mln_binding()));
+      argc, argv, ksmc::stdlib::tabletop::kit::domain_spec(ksmc_generated::tabletop::binding()));
 }

@@ -1,0 +1,40 @@
+// The sampler items of a domain fit the kit: exactly one likelihood (when the domain has a
+// model), `prior for ...:` terms are per-binding priors (`-> real`), plain `prior` items are
+// global terms (no result).
+#include "compiler/check/passes.h"
+
+namespace ksmc::compiler::check {
+
+void DomainItemsPass::run(Context& ctx) {
+  const ast::Loc* first_likelihood = nullptr;
+  const ast::Loc* model = nullptr;
+  for (const ast::Item& item : ctx.main().items) {
+    if (std::holds_alternative<ast::ModelDecl>(item.node) && model == nullptr) model = &item.loc;
+    if (std::holds_alternative<ast::LikelihoodDecl>(item.node)) {
+      if (first_likelihood != nullptr) {
+        ctx.diags.error(item.loc, "a domain has exactly one likelihood; the first is at " + ctx.where(*first_likelihood));
+      } else {
+        first_likelihood = &item.loc;
+      }
+    }
+    const auto* p = std::get_if<ast::PriorDecl>(&item.node);
+    if (p == nullptr) continue;
+    auto it = ctx.symbols.externs.find(p->call.name);
+    if (it == ctx.symbols.externs.end() || it->second.decl->kind.name != "prior") continue;  // the calls pass reported it
+    const auto& result = it->second.decl->result;
+    if (p->quantified && !result) {
+      ctx.diags.error(p->call.loc, "'" + p->call.name + "' is a global prior term (no '-> real' result); 'prior for ...:' needs a per-binding term such as 'gaussian'; write 'prior " +
+                                       p->call.name + "(...);'");
+    } else if (p->quantified && (result->name != "real" || result->list_depth != 0 || result->is_set)) {
+      ctx.diags.error(p->call.loc, "a per-binding prior term returns real; '" + p->call.name + "' does not");
+    } else if (!p->quantified && result) {
+      ctx.diags.error(p->call.loc, "'" + p->call.name + "' is a per-binding prior term ('-> real'); use it as 'prior for VARS where ...: " +
+                                       p->call.name + "(...);'");
+    }
+  }
+  if (model != nullptr && first_likelihood == nullptr) {
+    ctx.diags.error(*model, "the domain has a model but no likelihood; add 'likelihood KIT_BLOCK(...);'");
+  }
+}
+
+}  // namespace ksmc::compiler::check

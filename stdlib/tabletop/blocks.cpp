@@ -1,0 +1,121 @@
+#include "stdlib/tabletop/blocks.h"
+
+#include <algorithm>
+
+#include "stdlib/tabletop/extract_contact.h"
+#include "stdlib/tabletop/extract_higher.h"
+#include "stdlib/tabletop/extract_intersect.h"
+#include "stdlib/tabletop/extract_stable.h"
+
+namespace ksmc::stdlib::tabletop::blocks {
+
+namespace {
+
+const EvidenceParams kDefaults{};
+
+bool one_body(Se3 pose, Vec3 size) { return pose.body >= 0 && pose.body == size.body; }
+
+Obb box_of(const Scene& s, Se3 pose, Vec3 size) {
+  return one_body(pose, size) ? s.box(pose.body) : Obb::from_pose(*pose.pose, *size.size);
+}
+
+// Pair geometry with the exact distance wherever it is at most `cutoff` (never below the
+// stdlib's largest contact tolerance, so one computation serves every block of the pair).
+PairGeometry geometry(const Scene& s, Se3 pa, Vec3 sa, Se3 pb, Vec3 sb, double cutoff) {
+  cutoff = std::max(cutoff, kDefaults.max_contact_eps());
+  if (one_body(pa, sa) && one_body(pb, sb) && pa.body != pb.body) return s.pair(pa.body, pb.body, cutoff);
+  return pair_geometry(box_of(s, pa, sa), box_of(s, pb, sb), cutoff);
+}
+
+EvidenceParams contact_params(double eps) {
+  EvidenceParams p;
+  p.contact_eps = eps;
+  p.vertical_contact_eps = std::max(kDefaults.vertical_contact_eps, eps);
+  return p;
+}
+
+EvidenceParams intersect_params(double eps) {
+  EvidenceParams p;
+  p.intersect_eps = eps;
+  p.vertical_intersect_eps = std::max(kDefaults.vertical_intersect_eps, eps);
+  return p;
+}
+
+}  // namespace
+
+namespace obb {
+
+bool stable(const Scene& s, Se3 pose, Vec3 size, double tol) {
+  s.relation_params_mut().stable_tol_rad = tol;
+  return tilt_angle(box_of(s, pose, size)) <= tol;
+}
+
+bool contact(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, double eps) {
+  const EvidenceParams p = contact_params(eps);
+  EvidenceParams& rec = s.relation_params_mut();
+  rec.contact_eps = p.contact_eps;
+  rec.vertical_contact_eps = p.vertical_contact_eps;
+  return contact_from_geometry(geometry(s, pose_a, size_a, pose_b, size_b, p.max_contact_eps()), p);
+}
+
+bool intersect(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, double eps) {
+  const EvidenceParams p = intersect_params(eps);
+  EvidenceParams& rec = s.relation_params_mut();
+  rec.intersect_eps = p.intersect_eps;
+  rec.vertical_intersect_eps = p.vertical_intersect_eps;
+  return intersect_from_geometry(geometry(s, pose_a, size_a, pose_b, size_b, 0.0), p);
+}
+
+bool higher(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b) {
+  return extract_higher(box_of(s, pose_a, size_a), box_of(s, pose_b, size_b), kDefaults);
+}
+
+bool hover(const Scene& s, std::int32_t o, double eps) {
+  if (s.is_table(o)) return false;  // the table rests on the ground
+  s.note_hover_tolerance(eps);
+  for (std::size_t j = 0; j < s.bodies(); ++j)
+    if (static_cast<std::int32_t>(j) != o && touching(s, o, static_cast<std::int32_t>(j), eps)) return false;
+  return true;
+}
+
+}  // namespace obb
+
+bool touching(const Scene& s, std::int32_t a, std::int32_t b, double eps) {
+  // contact or intersect, whatever the intersect depth: overlapping, or a gap within the
+  // contact tolerance of its direction (contact_from_geometry).
+  const EvidenceParams p = contact_params(eps);
+  const PairGeometry& g = s.pair(a, b, std::max(p.max_contact_eps(), kDefaults.max_contact_eps()));
+  if (g.overlapping) return true;
+  const double tol = g.stacked && is_near_vertical(g.direction, p) ? p.vertical_contact_eps : p.contact_eps;
+  return g.distance <= tol;
+}
+
+std::vector<std::uint32_t> touching_row(const Scene& s, std::int32_t c) {
+  const auto& tols = s.hover_tolerances();
+  std::vector<std::uint32_t> row(s.bodies(), 0);
+  for (std::size_t j = 0; j < s.bodies(); ++j) {
+    if (static_cast<std::int32_t>(j) == c) continue;
+    for (std::size_t t = 0; t < tols.size() && t < 32; ++t)
+      if (touching(s, c, static_cast<std::int32_t>(j), tols[t])) row[j] |= 1u << t;
+  }
+  return row;
+}
+
+namespace scene {
+
+bool is_table(const Scene& s, std::int32_t o) { return s.is_table(o); }
+Output decisions(std::int32_t false_est, std::int32_t hidden) { return Decisions{false_est, hidden}; }
+
+}  // namespace scene
+
+Prior mln() { return MlnPrior{}; }
+
+namespace keypoints {
+Likelihood gaussian(double sigma, bool robust, double outlier_px) { return KeypointGaussian{sigma, robust, outlier_px}; }
+}  // namespace keypoints
+
+namespace pose {
+Source perturb(double sigma_t, double sigma_r, int candidates) { return PosePerturb{sigma_t, sigma_r, candidates}; }
+}  // namespace pose
+
+}  // namespace ksmc::stdlib::tabletop::blocks

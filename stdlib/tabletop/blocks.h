@@ -1,0 +1,93 @@
+// The table-top kit's blocks as generated code calls them (docs/binding.md §3, §4): one
+// C++ function or factory per `extern` of stdlib/tabletop.ksm, parameters in signature order,
+// numbers in base units (m, rad, px). Per-binding blocks (extractors) take the Scene first;
+// factories (prior, likelihood, proposal, output) return the kit's block values.
+//
+//   extract stable(o) = obb.stable(pose[o], size[o], tol = 10 deg);
+//     -> blk::obb::stable(s, s.se3(c[0]), s.vec3(c[0]), 0.17453292519943295)
+//   output scene.decisions(false_est = falseEst, hidden = hidden);
+//     -> blk::scene::decisions(kPred_falseEst, kPred_hidden)
+//
+// The extractors compute the relations of stdlib/tabletop/extract_*.h from the Scene's cached
+// geometry. Tolerances the .ksm signatures do not expose are the stdlib defaults of
+// EvidenceParams: the near-vertical tolerances (raised to the block's eps when larger), the
+// vertical cone, higher's 15 mm, and the intersect depth below which a contact is a touch.
+#pragma once
+
+#include <cstdint>
+#include <variant>
+
+#include "runtime/domain/binding.h"
+#include "stdlib/tabletop/block_scene.h"
+
+namespace ksmc::stdlib::tabletop::blocks {
+
+// Moves the proposal sources make (`makes perturb`): perturb is its own reverse.
+enum class Move { perturb };
+
+// Global prior `mln`: the Markov logic score of the state (kit: PriorQuantity).
+struct MlnPrior {};
+using Prior = std::variant<MlnPrior>;
+
+// Likelihood `keypoints.gaussian` (eq. 4.4; kit_likelihood.h).
+struct KeypointGaussian {
+  double sigma_px = 1.0;
+  bool robust = false;
+  double outlier_px = 20.0;
+};
+using Likelihood = KeypointGaussian;
+
+// Proposal source `pose.perturb` (the DDMCMC refine move, refine_kernel.h).
+struct PosePerturb {
+  double sigma_t = 0.003;  // [m]
+  double sigma_r = 0.0;    // [rad]
+  int candidates = 20;
+};
+using Source = PosePerturb;
+
+// Output `scene.decisions`: the query predicates reported per object as false_prob /
+// hidden_prob with their 0.4 / 0.6 decisions (program predicate ids).
+struct Decisions {
+  std::int32_t false_est = -1;
+  std::int32_t hidden = -1;
+};
+using Output = Decisions;
+
+namespace obb {
+// The box's up axis within `tol` [rad] of the table normal (extract_stable.h).
+bool stable(const Scene& s, Se3 pose, Vec3 size, double tol);
+// Touching without intersecting: gap at most eps [m] (extract_contact.h).
+bool contact(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, double eps);
+// Penetration deeper than eps [m], or containment (extract_intersect.h).
+bool intersect(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, double eps);
+// a's lowest face at or above b's highest face (extract_higher.h).
+bool higher(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b);
+// Constant o touches no other body, the table included (gap above eps [m] from every body).
+// The table itself never hovers.
+bool hover(const Scene& s, std::int32_t o, double eps);
+}  // namespace obb
+
+namespace scene {
+bool is_table(const Scene& s, std::int32_t o);
+Output decisions(std::int32_t false_est, std::int32_t hidden);
+}  // namespace scene
+
+Prior mln();
+
+namespace keypoints {
+Likelihood gaussian(double sigma, bool robust, double outlier_px);
+}  // namespace keypoints
+
+namespace pose {
+Source perturb(double sigma_t, double sigma_r, int candidates);
+}  // namespace pose
+
+// Whether bodies a and b touch in the sense of obb::hover with tolerance eps.
+bool touching(const Scene& s, std::int32_t a, std::int32_t b, double eps);
+// For every body j: a bit per tolerance hover was evaluated with (Scene::hover_tolerances),
+// set when j touches body c. A move of c can change hover(j) only where this changes.
+std::vector<std::uint32_t> touching_row(const Scene& s, std::int32_t c);
+
+using Binding = runtime::domain::Binding<Scene, Prior, Likelihood, Move, Source, Output>;
+
+}  // namespace ksmc::stdlib::tabletop::blocks

@@ -1,0 +1,92 @@
+// Bindings of domains/tabletop.ksm for the tests: the generated one (tabletop_model.cpp, what
+// bin/tabletop runs) and a copy written as `ksmc emit` writes it (docs/binding.md §3) with the
+// extract tolerances and likelihood settings as a type parameter, so the tests can also run
+// the seed's literal values (the calibration in docs/tabletop_kit.md) and variants.
+#pragma once
+
+#include <cstdint>
+
+#include "stdlib/tabletop/blocks.h"
+#include "tabletop_factors.h"
+#include "tabletop_model.h"
+
+namespace ksmc::tests::tabletop_kit {
+
+namespace blk = ksmc::stdlib::tabletop::blocks;
+namespace gen = ksmc_generated::tabletop;
+
+// domains/tabletop.ksm (10 deg, 4 mm, 5 mm, 4 mm; robust Gaussian, 5 px).
+struct KsmValues {
+  static constexpr double stable_tol = 0.17453292519943295;
+  static constexpr double contact_eps = 0.004;
+  static constexpr double intersect_eps = 0.005;
+  static constexpr double hover_eps = 0.004;
+  static constexpr bool robust = true;
+  static constexpr double outlier_px = 5.0;
+};
+
+// A literal reading of the seed: 3 deg, 4 mm, 4 mm, plain Gaussian (sigma 1 px).
+struct SeedValues {
+  static constexpr double stable_tol = 0.05235987755982988;
+  static constexpr double contact_eps = 0.004;
+  static constexpr double intersect_eps = 0.004;
+  static constexpr double hover_eps = 0.004;
+  static constexpr bool robust = false;
+  static constexpr double outlier_px = 20.0;
+};
+
+template <class V>
+struct Fixture {
+  static bool stable(const blk::Scene& s, const std::int32_t* c) {
+    return blk::obb::stable(s, s.se3(c[0]), s.vec3(c[0]), V::stable_tol);
+  }
+  static bool contact(const blk::Scene& s, const std::int32_t* c) {
+    return blk::obb::contact(s, s.se3(c[0]), s.vec3(c[0]), s.se3(c[1]), s.vec3(c[1]), V::contact_eps);
+  }
+  static bool intersect(const blk::Scene& s, const std::int32_t* c) {
+    return blk::obb::intersect(s, s.se3(c[0]), s.vec3(c[0]), s.se3(c[1]), s.vec3(c[1]), V::intersect_eps);
+  }
+  static bool higher(const blk::Scene& s, const std::int32_t* c) {
+    return blk::obb::higher(s, s.se3(c[0]), s.vec3(c[0]), s.se3(c[1]), s.vec3(c[1]));
+  }
+  static bool hover(const blk::Scene& s, const std::int32_t* c) { return blk::obb::hover(s, c[0], V::hover_eps); }
+  static bool table(const blk::Scene& s, const std::int32_t* c) { return blk::scene::is_table(s, c[0]); }
+
+  static blk::Binding make(bool decisions = true) {
+    blk::Binding b;
+    b.domain = "tabletop";
+    b.source = "domains/tabletop.ksm";
+    b.mln = {&gen::program, &gen::make_domain, &gen::ground};
+    b.constant_type = gen::kType_object;
+    b.extractors.push_back({gen::kPred_stable, &stable, "extract stable(o) = obb.stable(...)"});
+    b.extractors.push_back({gen::kPred_contact, &contact, "extract contact(a, b) = obb.contact(...)"});
+    b.extractors.push_back({gen::kPred_intersect, &intersect, "extract intersect(a, b) = obb.intersect(...)"});
+    b.extractors.push_back({gen::kPred_higher, &higher, "extract higher(a, b) = obb.higher(...)"});
+    b.extractors.push_back({gen::kPred_hover, &hover, "extract hover(o) = obb.hover(o, ...)"});
+    b.extractors.push_back({gen::kPred_table, &table, "extract table(o) = scene.is_table(o)"});
+    b.priors.push_back(blk::mln());
+    b.likelihood = blk::keypoints::gaussian(1.0, V::robust, V::outlier_px);
+    if (decisions) b.outputs.push_back(blk::scene::decisions(gen::kPred_falseEst, gen::kPred_hidden));
+    b.kernels.push_back({"refine", "refine", blk::Move::perturb, {blk::pose::perturb(0.001, 0.008726646259971648, 20)},
+                         "kernel refine(o: object) reverse refine = pose.perturb(...)"});
+    b.schedule.push_back({0, ksmc::runtime::domain::ScheduleRow::kForever, {{"refine", 1.0}}});
+    return b;
+  }
+};
+
+// Long-lived bindings (a model keeps a reference). ksm_binding() is the generated one.
+inline const blk::Binding& ksm_binding() { return ksmc_generated::tabletop::binding(); }
+inline const blk::Binding& ksm_fixture_binding() {
+  static const blk::Binding b = Fixture<KsmValues>::make();
+  return b;
+}
+inline const blk::Binding& seed_binding() {
+  static const blk::Binding b = Fixture<SeedValues>::make();
+  return b;
+}
+inline const blk::Binding& no_decisions_binding() {
+  static const blk::Binding b = Fixture<KsmValues>::make(false);
+  return b;
+}
+
+}  // namespace ksmc::tests::tabletop_kit

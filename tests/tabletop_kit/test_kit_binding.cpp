@@ -1,0 +1,89 @@
+// The kit's checks of a binding: what it cannot run is a ConfigError (an internal error of
+// the binary: `ksmc check` enforces the kit contract), and the kernels come from the moves.
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "runtime/domain/config_error.h"
+#include "stdlib/tabletop/kit/domain_spec.h"
+#include "stdlib/tabletop/kit/refine_kernel.h"
+#include "stdlib/tabletop/scene_io.h"
+#include "tests/tabletop_kit/binding_fixture.h"
+
+namespace kit = ksmc::stdlib::tabletop::kit;
+namespace rd = ksmc::runtime::domain;
+using namespace ksmc::tests::tabletop_kit;
+
+namespace {
+
+std::string binding_error(const blk::Binding& b) {
+  try {
+    kit::check_binding(b);
+  } catch (const rd::ConfigError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+}  // namespace
+
+TEST_CASE("the generated binding is the fixture's copy of domains/tabletop.ksm, and the kit runs it") {
+  const blk::Binding& g = ksm_binding();
+  const blk::Binding& f = ksm_fixture_binding();
+  CHECK(binding_error(g) == "(no error)");
+  CHECK(g.domain == f.domain);
+  REQUIRE(g.extractors.size() == f.extractors.size());
+  for (std::size_t i = 0; i < g.extractors.size(); ++i) CHECK(g.extractors[i].predicate == f.extractors[i].predicate);
+  CHECK(g.likelihood.sigma_px == f.likelihood.sigma_px);
+  CHECK(g.likelihood.robust == f.likelihood.robust);
+  CHECK(g.likelihood.outlier_px == f.likelihood.outlier_px);
+  REQUIRE(g.outputs.size() == 1);
+  CHECK(g.outputs[0].false_est == f.outputs[0].false_est);
+  CHECK(g.outputs[0].hidden == f.outputs[0].hidden);
+  REQUIRE(g.kernels.size() == 1);
+  CHECK(g.kernels[0].name == f.kernels[0].name);
+  REQUIRE(g.kernels[0].sources.size() == 1);
+  CHECK(g.kernels[0].sources[0].sigma_t == f.kernels[0].sources[0].sigma_t);
+  CHECK(g.kernels[0].sources[0].sigma_r == f.kernels[0].sources[0].sigma_r);
+  CHECK(g.kernels[0].sources[0].candidates == f.kernels[0].sources[0].candidates);
+  // The extractors of both compute the same evidence on a scene.
+  const auto scene = std::make_shared<const ksmc::stdlib::tabletop::Scene>(
+      ksmc::stdlib::tabletop::load_scene(std::filesystem::path(KSMC_SOURCE_DIR) / "examples/tabletop/seed_example.json").scene);
+  const kit::TabletopModel mg(scene, g), mf(scene, f);
+  CHECK(mg.semantics().evidence_db(mg.outcome(), mg.block_scene().names()) ==
+        mf.semantics().evidence_db(mf.outcome(), mf.block_scene().names()));
+}
+
+TEST_CASE("scene.decisions must name unary query predicates over the objects") {
+  blk::Binding b = ksm_binding();
+  b.outputs[0].false_est = gen::kPred_contact;  // an evidence predicate of arity 2
+  const std::string e = binding_error(b);
+  CHECK(e.find("domains/tabletop.ksm") != std::string::npos);
+  CHECK(e.find("contact") != std::string::npos);
+  b.outputs[0].false_est = 999;
+  CHECK(binding_error(b).find("names no predicate") != std::string::npos);
+}
+
+TEST_CASE("kernels need pose.perturb sources; the schedule names declared kernels") {
+  blk::Binding b = ksm_binding();
+  b.kernels[0].sources.clear();
+  CHECK(binding_error(b).find("kernel refine") != std::string::npos);
+  blk::Binding renamed = ksm_binding();
+  renamed.kernels[0].name = renamed.kernels[0].reverse = "jiggle";
+  renamed.schedule[0].probabilities = {{"jiggle", 1.0}};
+  auto scene = std::make_shared<const ksmc::stdlib::tabletop::Scene>();
+  const kit::KitSetup k = kit::make_setup(renamed, scene);  // a kernel's name is the author's choice
+  REQUIRE(k.setup.kernels.size() == 1);
+  CHECK(k.setup.kernels[0]->name() == "jiggle");
+  blk::Binding unknown = ksm_binding();
+  unknown.schedule[0].probabilities = {{"nudge", 1.0}};
+  CHECK_THROWS_AS(kit::make_setup(unknown, scene), rd::ConfigError);
+}
+
+TEST_CASE("several sources of one kernel: each move uses one of them") {
+  blk::Binding b = ksm_binding();
+  b.kernels[0].sources.push_back(blk::pose::perturb(0.005, 0.02, 5));
+  const kit::RefineKernel k(b.kernels[0], true);
+  CHECK(k.sources().size() == 2);
+  CHECK(k.sources()[1].candidates == 5);
+}
