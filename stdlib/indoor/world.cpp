@@ -27,15 +27,15 @@ KernelKind reverse_of(KernelKind k) {
 
 const char* kernel_name(KernelKind k) {
   switch (k) {
-    case KernelKind::Add: return "ADD";
-    case KernelKind::Remove: return "REMOVE";
-    case KernelKind::Split: return "SPLIT";
-    case KernelKind::Merge: return "MERGE";
-    case KernelKind::Shrink: return "SHRINK";
-    case KernelKind::Dilate: return "DILATE";
-    case KernelKind::Allocate: return "ALLOCATE";
-    case KernelKind::Delete: return "DELETE";
-    case KernelKind::Interchange: return "INTERCHANGE";
+    case KernelKind::Add: return "birth";
+    case KernelKind::Remove: return "death";
+    case KernelKind::Split: return "split";
+    case KernelKind::Merge: return "merge";
+    case KernelKind::Shrink: return "shrink";
+    case KernelKind::Dilate: return "dilate";
+    case KernelKind::Allocate: return "allocate";
+    case KernelKind::Delete: return "deallocate";
+    case KernelKind::Interchange: return "interchange";
   }
   return "?";
 }

@@ -46,6 +46,7 @@ enum class KernelKind : std::uint8_t {
 };
 inline constexpr int kKernelKinds = 9;
 KernelKind reverse_of(KernelKind k);
+// The move's name as stdlib/indoor.ksm declares it (`makes birth / death`, ...).
 const char* kernel_name(KernelKind k);
 
 struct UnitChange {

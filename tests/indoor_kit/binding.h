@@ -1,13 +1,18 @@
-// The generated Markov logic part of domains/indoor.ksm as the kit's MlnBinding.
+// The generated binding of domains/indoor.ksm (indoor_model.h, indoor_factors.h of
+// emit_binding.cmake): the kit tests run it as bin/indoor does, or a copy they change
+// (other kernels, lenient types, conditional priors).
 #pragma once
 
 #include "indoor_factors.h"
-#include "runtime/domain/config.h"
+#include "indoor_model.h"
+#include "stdlib/indoor/blocks.h"
 
 namespace ksmc::tests::indoor_kit {
 
-inline ksmc::runtime::domain::MlnBinding indoor_binding() {
-  return {&ksmc_generated::indoor::program, &ksmc_generated::indoor::make_domain, &ksmc_generated::indoor::ground};
-}
+namespace blk = ksmc::stdlib::indoor::blocks;
+namespace dom = ksmc::runtime::domain;
+namespace gen = ksmc_generated::indoor;
+
+inline blk::Binding indoor_binding() { return gen::binding(); }
 
 }  // namespace ksmc::tests::indoor_kit

@@ -1,19 +1,9 @@
-// Development binary `indoor-dev`: what the generated indoor_main.cpp will be, with the
-// hand-built configuration of config_fixture.h standing in for indoor_model.cpp.
-#include <iostream>
-
+// Development binary `indoor-dev`: bin/indoor built in the test tree (the generated binding of
+// domains/indoor.ksm through the kit), so the kit tests run it without the domains/ build.
 #include "runtime/cli/domain_main.h"
 #include "stdlib/indoor/kit/kit.h"
 #include "tests/indoor_kit/binding.h"
-#include "tests/indoor_kit/config_fixture.h"
 
 int main(int argc, char** argv) {
-  try {
-    const auto spec = ksmc::stdlib::indoor::kit::domain_spec(ksmc::tests::indoor_kit::indoor_config(),
-                                                             ksmc::tests::indoor_kit::indoor_binding());
-    return ksmc::runtime::cli::run_domain_main(argc, argv, spec);
-  } catch (const std::exception& e) {  // a ConfigError: the domain file asks for something the kit lacks
-    std::cerr << "indoor: " << e.what() << "\n";
-    return 1;
-  }
+  return ksmc::runtime::cli::run_domain_main(argc, argv, ksmc::stdlib::indoor::kit::domain_spec(ksmc::tests::indoor_kit::indoor_binding()));
 }

@@ -10,7 +10,6 @@
 #include "stdlib/indoor/cell.h"
 #include "stdlib/indoor/kit/kit.h"
 #include "tests/indoor_kit/binding.h"
-#include "tests/indoor_kit/config_fixture.h"
 
 namespace ksmc::tests::indoor_kit {
 
@@ -46,6 +45,6 @@ inline runtime::cli::DomainInput input_for(const runtime::cli::DomainSpec& spec,
   return in;
 }
 
-inline runtime::cli::DomainSpec spec() { return stdlib::indoor::kit::domain_spec(indoor_config(), indoor_binding()); }
+inline runtime::cli::DomainSpec spec() { return stdlib::indoor::kit::domain_spec(indoor_binding()); }
 
 }  // namespace ksmc::tests::indoor_kit

@@ -79,16 +79,30 @@ TEST_CASE("indoor-dev: the simulated office against its truth", "[indoor_kit][cl
   const auto result = ksmc::stdlib::indoor::io::read_world_json(out / "world.json");
   const auto truth = ksmc::stdlib::indoor::io::read_world_json(src / "sim_office_truth.json");
   const double k = result.metrics.at("cell_prediction_rate");
+  // Types are the domain's predicate names (Room, Corr, Hall); the truth file says room, corridor, hall.
   auto count = [](const ksmc::stdlib::indoor::io::WorldResult& w, const std::string& t) {
     int n = 0;
     for (const auto& u : w.units) n += u.type == t;
     return n;
   };
   std::cout << "sim_office: K " << k << ", units " << result.units.size() << " (truth " << truth.units.size()
-            << "), rooms " << count(result, "room") << " (truth " << count(truth, "room") << "), corridors "
-            << count(result, "corridor") << " (truth " << count(truth, "corridor") << "), halls "
-            << count(result, "hall") << " (truth " << count(truth, "hall") << "), doors " << result.doors.size()
+            << "), rooms " << count(result, "Room") << " (truth " << count(truth, "room") << "), corridors "
+            << count(result, "Corr") << " (truth " << count(truth, "corridor") << "), halls "
+            << count(result, "Hall") << " (truth " << count(truth, "hall") << "), doors " << result.doors.size()
             << " (truth " << truth.doors.size() << ")\n";
   CHECK(k >= 0.85);
-  CHECK(count(result, "room") >= 3);
+  CHECK(count(result, "Room") >= 3);
+  // Every unit is typed by the domain's type group, and every query predicate is reported.
+  const auto world = nlohmann::json::parse(std::ifstream(out / "world.json"));
+  CHECK(world.at("types") == nlohmann::json::array({"Room", "Corr", "Hall", "Other"}));
+  for (const char* q : {"Room", "Corr", "Hall", "Other", "SaLe"}) CHECK(world.at("queries").contains(q));
+  for (const auto& u : world.at("units")) {
+    double total = 0.0;
+    for (const auto& [t, p] : u.at("type_probs").items()) total += p.get<double>();
+    CHECK(total == Approx(1.0).epsilon(0.02));
+    CHECK(world.at("queries").at(u.at("type").get<std::string>()).contains("u" + std::to_string(u.at("id").get<int>())));
+  }
+  std::ifstream dot(out / "scene.dot");
+  const std::string dot_text((std::istreambuf_iterator<char>(dot)), std::istreambuf_iterator<char>());
+  CHECK(dot_text.find("(0.00)") == std::string::npos);  // the label shows the unit's own type probability
 }

@@ -86,11 +86,11 @@ TEST_CASE("indoor model: the engine explains a synthetic plan, deterministically
   const auto sem = m.final_semantics();
   REQUIRE(sem);
   int rooms = 0, corridors = 0;
-  for (const auto& u : sem->units) {
-    rooms += u.type == 0;
-    corridors += u.type == 1;
+  for (int t : sem->type) {
+    rooms += t == 0;  // type group order of indoor.ksm: Room, Corr, Hall, Other
+    corridors += t == 1;
   }
-  std::cout << "indoor kit synthetic plan: K " << k << ", units " << sem->units.size() << ", rooms " << rooms
+  std::cout << "indoor kit synthetic plan: K " << k << ", units " << sem->ids.size() << ", rooms " << rooms
             << ", corridors " << corridors << ", doors " << m.scored().world().doors().size() << "\n";
   CHECK(k > 0.9);
   CHECK(rooms >= 3);

@@ -1,86 +1,152 @@
-// The semantic half: the Table 3.6 classifier, adjacency / connecting walls, and Markov logic
-// inference over the generated indoor factors with its evidence cache.
+// The semantic half: the extractor blocks (Table 3.6 classifier, adjacency / connecting walls,
+// door count, wall-length difference) and the semantic layer over the shared evaluator: unit
+// types from the program's type group, conditional prior bindings, the evidence cache.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 
-#include "stdlib/indoor/kit/semantics.h"
+#include "stdlib/indoor/blocks/walls.h"
+#include "stdlib/indoor/kit/semantic_layer.h"
 #include "stdlib/indoor/map_evidence.h"
 #include "tests/indoor_kit/binding.h"
-#include "tests/indoor_kit/config_fixture.h"
 
 using namespace ksmc::stdlib::indoor;
 using namespace ksmc::stdlib::indoor::kit;
-
-TEST_CASE("Table 3.6: size and aspect ratio give room, corridor or hall", "[indoor_kit]") {
-  const ClassifierSettings c{10.0, 3.0};
-  CHECK(classify_unit({0, 0, 80, 60, 0}, 0.05, c) == GeomClass::RoomLike);      // 4 m x 3 m
-  CHECK(classify_unit({0, 0, 190, 40, 0}, 0.05, c) == GeomClass::CorridorLike); // 9.5 m x 2 m
-  CHECK(classify_unit({0, 0, 280, 160, 0}, 0.05, c) == GeomClass::HallLike);    // 14 m x 8 m
-  CHECK(classify_unit({0, 0, 400, 40, 0}, 0.05, c) == GeomClass::HallLike);     // big wins over ratio
-  CHECK(classify_unit({0, 0, 60, 20, 0.3}, 0.05, c) == GeomClass::RoomLike);    // ratio exactly 3
-}
-
-TEST_CASE("connecting walls: shared, near and distant units", "[indoor_kit]") {
-  const OrientedRect a{50, 50, 100, 60, 0};   // x 0..100, y 20..80
-  const OrientedRect b{130, 50, 60, 60, 0};   // x 100..160: shares a's right wall
-  const OrientedRect c{300, 50, 60, 60, 0};   // far away
-  const OrientedRect d{50, 110, 100, 60, 0};  // y 80..140: shares a's bottom wall, same length
-  const OrientedRect e{133, 50, 60, 40, 0};   // 3 cells from a, shorter
-  auto ab = connecting_walls(a, b, 2.0);
-  REQUIRE(ab);
-  CHECK(ab->length_a == Approx(60));
-  CHECK(ab->length_b == Approx(60));
-  CHECK(!connecting_walls(a, c, 2.0));
-  CHECK(wall_length_diff(a, d, 2.0, 0.05).value() == Approx(0.0).margin(1e-9));
-  const auto ae = wall_length_diff(a, e, 2.0, 0.05);
-  REQUIRE(ae);
-  CHECK(*ae == Approx(1.0));  // 60 vs 40 cells = 1 m
-  CHECK(!connecting_walls(a, e, 0.5));  // 3 cells apart: beyond 2 * 0.5 + 1
-}
+using namespace ksmc::tests::indoor_kit;
 
 namespace {
-World world_of(const std::vector<OrientedRect>& rects, const MapEvidence& ev) {
+
+World world_of(const std::vector<OrientedRect>& rects, const std::vector<std::pair<UnitId, UnitId>>& doors = {}) {
   Move m;
   UnitId id = 1;
-  for (const auto& r : rects) {
-    m.units.push_back({id, std::nullopt, ev.make_unit(id, r)});
-    ++id;
+  for (const auto& r : rects) m.units.push_back({id, std::nullopt, Unit{id++, r}});
+  DoorId did = 1;
+  for (auto [a, b] : doors) {
+    Door d;
+    d.id = did++;
+    d.unit_a = a;
+    d.unit_b = b;
+    m.doors.push_back({d.id, std::nullopt, d});
   }
   World w;
   w.apply(m);
   return w;
 }
+
 }  // namespace
 
-TEST_CASE("MLN inference types the units and is cached by evidence", "[indoor_kit]") {
-  const IndoorSettings s = read_settings(ksmc::tests::indoor_kit::indoor_config());
-  SemanticEngine eng(s.semantic, ksmc::tests::indoor_kit::indoor_binding(), 0.05, 1);
-  ClassGrid g(200, 400, static_cast<std::uint8_t>(Cell::Free));
-  const MapEvidence ev(g, 1);
-  // Two rooms (4 m x 3 m) side by side above a corridor (9 m x 2 m), and a hall (12 m x 8 m).
-  const World w = world_of({{40, 30, 80, 60, 0}, {120, 30, 80, 60, 0}, {80, 80, 160, 40, 0}, {300, 100, 240, 160, 0}}, ev);
-  const SemanticResult r = eng.evaluate(w);
-  REQUIRE(r.units.size() == 4);
-  CHECK(r.units[0].type == 0);  // Room
-  CHECK(r.units[1].type == 0);
-  CHECK(r.units[2].type == 1);  // Corr
-  CHECK(r.units[3].type == 2);  // Hall
-  for (const auto& u : r.units) {
-    double t = 0;
-    for (double p : u.type_probs) t += p;
-    CHECK(t == Approx(1.0).epsilon(0.05));
-    CHECK(u.type_probs[static_cast<std::size_t>(u.type)] > 0.5);
+TEST_CASE("Table 3.6 blocks: size and aspect ratio give exactly one of room, corridor or hall", "[indoor_kit]") {
+  // 4 x 3 m, 9.5 x 2 m, 14 x 8 m, 20 x 2 m (big wins over ratio), ratio exactly 3.
+  const World w = world_of({{0, 0, 80, 60, 0}, {0, 0, 190, 40, 0}, {0, 0, 280, 160, 0}, {0, 0, 400, 40, 0}, {0, 0, 60, 20, 0.3}});
+  const blk::Scene s(w, 0.05);
+  const int want[] = {0, 1, 2, 2, 0};
+  for (std::int32_t i = 0; i < 5; ++i) {
+    const bool r = blk::geom::room_like(s, s.rect(i), 10.0, 3.0);
+    const bool c = blk::geom::corridor_like(s, s.rect(i), 10.0, 3.0);
+    const bool h = blk::geom::hall_like(s, s.rect(i), 10.0, 3.0);
+    INFO("unit " << i);
+    CHECK(r + c + h == 1);
+    CHECK((want[i] == 0 ? r : want[i] == 1 ? c : h));
   }
-  // Adjacent: rooms share a wall, both touch the corridor; the hall stands alone.
-  CHECK(r.adjacent == std::vector<std::pair<UnitId, UnitId>>{{1, 2}, {1, 3}, {2, 3}});
-  // Two adjacent rooms: the same-length rule fires (SaLe of a room and the corridor is nearly
-  // unconstrained, P ~ 0.5, and may pass too); never for non-adjacent units.
-  CHECK(std::find(r.same_length.begin(), r.same_length.end(), std::make_pair(UnitId{1}, UnitId{2})) != r.same_length.end());
-  for (auto [a, b] : r.same_length) CHECK(std::find(r.adjacent.begin(), r.adjacent.end(), std::make_pair(a, b)) != r.adjacent.end());
-  CHECK(eng.stats().inferences == 1);
-  const SemanticResult r2 = eng.evaluate(w);
-  CHECK(eng.stats().inferences == 1);
-  CHECK(eng.stats().cache_hits == 1);
-  CHECK(r2.units[0].type_probs == r.units[0].type_probs);
+  CHECK(blk::geom::hall_like(s, s.rect(0), 3.5, 3.0));  // 4 m > 3.5 m
+}
+
+TEST_CASE("connecting walls, adjacency and the wall-length difference", "[indoor_kit]") {
+  const OrientedRect a{50, 50, 100, 60, 0};   // x 0..100, y 20..80
+  const OrientedRect b{130, 50, 60, 60, 0};   // x 100..160: shares a's right wall
+  const OrientedRect c{300, 50, 60, 60, 0};   // far away
+  const OrientedRect d{50, 110, 100, 60, 0};  // y 80..140: shares a's bottom wall, same length
+  const OrientedRect e{133, 50, 60, 40, 0};   // 3 cells from a, shorter
+  auto ab = blk::connecting_walls(a, b, 2.0);
+  REQUIRE(ab);
+  CHECK(ab->length_a == Approx(60));
+  CHECK(ab->length_b == Approx(60));
+  CHECK(!blk::connecting_walls(a, c, 2.0));
+  CHECK(!blk::connecting_walls(a, e, 0.5));  // 3 cells apart: beyond 2 * 0.5 + 1
+
+  const World w = world_of({a, b, c, d, e});
+  const blk::Scene s(w, 0.05);
+  CHECK(blk::geom::adjacent(s, s.rect(0), s.rect(1), 2.0));
+  CHECK(blk::geom::adjacent(s, s.rect(1), s.rect(0), 2.0));
+  CHECK(!blk::geom::adjacent(s, s.rect(0), s.rect(2), 2.0));
+  CHECK(!blk::geom::adjacent(s, s.rect(0), s.rect(0), 2.0));  // never adjacent to itself
+  CHECK(!blk::geom::adjacent(s, s.rect(0), s.rect(4), 0.5));
+  CHECK(blk::wall_length_diff(s, s.rect(0), s.rect(3)) == Approx(0.0).margin(1e-9));
+  CHECK(blk::wall_length_diff(s, s.rect(0), s.rect(4)) == Approx(1.0));  // 60 vs 40 cells = 1 m
+  CHECK(blk::wall_length_diff(s, s.rect(4), s.rect(0)) == Approx(1.0));
+  CHECK(blk::wall_length_diff(s, s.rect(0), s.rect(2)) == 0.0);  // no connecting walls
+  CHECK(blk::gaussian(s, 0.6, 0.3) == Approx(-2.0));
+}
+
+TEST_CASE("multi_door counts the doors attached to a unit", "[indoor_kit]") {
+  const World w = world_of({{40, 30, 80, 60, 0}, {120, 30, 80, 60, 0}, {80, 80, 160, 40, 0}}, {{1, 3}, {2, 3}, {1, 2}});
+  const blk::Scene s(w, 0.05);
+  CHECK(blk::geom::multi_door(s, s.rect(2), s.segments(), 2));
+  CHECK(!blk::geom::multi_door(s, s.rect(2), s.segments(), 3));
+  CHECK(!blk::geom::multi_door(s, s.rect(0), s.segments().subspan(0, 1), 2));
+}
+
+TEST_CASE("the semantic layer types the units from the type group and is cached by evidence", "[indoor_kit]") {
+  const blk::Binding b = indoor_binding();
+  const KitPlan plan = make_plan(b);
+  SemanticLayer sem(b, plan, 0.05, nullptr, 1);
+  CHECK(sem.type_names() == std::vector<std::string>{"Room", "Corr", "Hall", "Other"});
+  // Two rooms (4 m x 3 m) side by side above a corridor (9 m x 2 m), and a hall (12 m x 8 m).
+  const World w = world_of({{40, 30, 80, 60, 0}, {120, 30, 80, 60, 0}, {80, 80, 160, 40, 0}, {300, 100, 240, 160, 0}});
+  const SemanticResult r = sem.evaluate(w);
+  REQUIRE(r.ids == std::vector<UnitId>{1, 2, 3, 4});
+  CHECK(r.type == std::vector<int>{0, 0, 1, 2});  // Room, Room, Corr, Hall
+  for (std::size_t i = 0; i < 4; ++i) {
+    double t = 0;
+    for (double p : r.type_probs[i]) t += p;
+    CHECK(t == Approx(1.0).epsilon(0.05));
+  }
+  // The SaLe prior holds for the two adjacent rooms (in both orders), never for units that
+  // are not adjacent.
+  const auto has = [&](UnitId x, UnitId y) {
+    return std::find(r.terms.begin(), r.terms.end(), PriorBinding{0, {x, y}}) != r.terms.end();
+  };
+  CHECK(has(1, 2));
+  CHECK(has(2, 1));
+  for (const auto& t : r.terms) {
+    CHECK(t.units[0] != 4);
+    CHECK(t.units[1] != 4);
+  }
+  // The terms on a later world: same-length rooms add nothing, a shorter one is penalised,
+  // a removed unit drops its bindings.
+  CHECK(sem.log_prior(w, {{0, {1, 2}}}) == Approx(0.0).margin(1e-12));
+  const World shorter = world_of({{40, 30, 80, 60, 0}, {120, 30, 80, 48, 0}});  // 60 vs 48 cells: 0.6 m
+  CHECK(sem.log_prior(shorter, {{0, {1, 2}}}) == Approx(-2.0));
+  CHECK(sem.log_prior(shorter, {{0, {1, 7}}}) == 0.0);
+  // The outputs: every query atom by name, units u<id>.
+  const auto q = sem.queries_json(r);
+  CHECK(q.at("Room").at("u1").get<double>() == Approx(r.type_probs[0][0]));
+  CHECK(q.contains("SaLe"));
+  CHECK(sem.evidence_db(r).find("\nAdj(u1,u2)\n") != std::string::npos);
+  CHECK(sem.evidence_db(r).find("\n!Adj(u1,u4)\n") != std::string::npos);
+  // Same evidence: no new inference.
+  const auto inferences = sem.stats().inferences;
+  const SemanticResult r2 = sem.evaluate(w);
+  CHECK(sem.stats().inferences == inferences);
+  CHECK(r2.type_probs == r.type_probs);
+}
+
+namespace {
+double minus_one(const blk::Scene&, const std::int32_t*) { return -1.0; }
+}  // namespace
+
+TEST_CASE("conditional priors on any predicate and condition", "[indoor_kit]") {
+  blk::Binding b = indoor_binding();
+  // prior for u where !RoLi(u): a constant term; prior for a, b where Adj(a, b): another.
+  b.conditional_priors = {{{gen::kType_unit}, {{false, gen::kPred_RoLi, {0}, dom::Cmp::gt, 0.0, true}}, &minus_one, "not room-like"},
+                          {{gen::kType_unit, gen::kType_unit}, {{false, gen::kPred_Adj, {0, 1}, dom::Cmp::gt, 0.0, false}}, &minus_one, "adjacent"}};
+  const KitPlan plan = make_plan(b);
+  SemanticLayer sem(b, plan, 0.05, nullptr, 1);
+  const World w = world_of({{40, 30, 80, 60, 0}, {120, 30, 80, 60, 0}, {80, 80, 160, 40, 0}, {300, 100, 240, 160, 0}});
+  const SemanticResult r = sem.evaluate(w);
+  std::size_t not_room = 0, adjacent = 0;
+  for (const auto& t : r.terms) (t.prior == 0 ? not_room : adjacent) += 1;
+  CHECK(not_room == 2);   // the corridor and the hall
+  CHECK(adjacent == 6);   // 1-2, 1-3, 2-3 in both orders
+  CHECK(sem.log_prior(w, r.terms) == Approx(-8.0));
 }

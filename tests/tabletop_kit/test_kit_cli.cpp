@@ -113,6 +113,27 @@ TEST_CASE("numeric object ids are accepted and echoed back as numbers") {
     CHECK((e[1].is_number_integer() || e[1] == "table"));
   }
   CHECK(g["queries"]["hidden"].contains("10"));
+  // --evidence-out names the constants as the queries do.
+  const fs::path db = out / "evidence.db";
+  REQUIRE(run({scene.string(), "--out", (out / "again").string(), "--seed", "1", "--iterations", "10", "-q",
+               "--evidence-out", db.string()}, err) == 0);
+  const std::string text = slurp(db);
+  CHECK(text.find("(10)") != std::string::npos);
+  CHECK(text.find("table") != std::string::npos);
+}
+
+TEST_CASE("--evidence-out refuses an id that is no .db constant, naming it") {
+  const fs::path src = fs::path(KSMC_SOURCE_DIR) / "examples/tabletop/stack.json";
+  auto doc = nlohmann::json::parse(slurp(src));
+  doc["objects"][0]["id"] = "box one";
+  const fs::path scene = fs::path(KSMC_BINARY_DIR) / "tests/tabletop_kit/spaced_id.json";
+  std::ofstream(scene) << doc.dump(2);
+  const fs::path out = fs::path(KSMC_BINARY_DIR) / "tests/tabletop_kit/cli_spaced";
+  fs::remove_all(out);
+  std::string err;
+  CHECK(run({scene.string(), "--out", out.string(), "--iterations", "5", "-q", "--evidence-out",
+             (out / "e.db").string()}, err) == 1);
+  CHECK(err.find("box one") != std::string::npos);
 }
 
 TEST_CASE("a domain without a decisions output reports relations and queries only") {

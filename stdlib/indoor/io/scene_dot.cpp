@@ -1,6 +1,7 @@
 #include "stdlib/indoor/io/scene_dot.h"
 
-#include <map>
+#include <algorithm>
+#include <iterator>
 
 #include <fmt/format.h>
 
@@ -26,12 +27,13 @@ std::string escape(const std::string& s) {
 
 std::string node(int id) { return id == 0 ? std::string("outside") : fmt::format("u{}", id); }
 
-// Fill colours per type, close to the seed's figures (rooms, corridors, halls told apart).
-const char* fill_of(const std::string& type) {
-  static const std::map<std::string, const char*> fills = {
-      {"room", "#fff2cc"}, {"corridor", "#d9ead3"}, {"hall", "#cfe2f3"}, {"other", "#eeeeee"}};
-  const auto it = fills.find(type);
-  return it == fills.end() ? "#ffffff" : it->second;
+// Fill colours per type, by the type's place in WorldResult::types (the seed's figures: the
+// first types yellow, green, blue, grey); white for an untyped unit.
+const char* fill_of(const WorldResult& w, const std::string& type) {
+  static const char* const fills[] = {"#fff2cc", "#d9ead3", "#cfe2f3", "#eeeeee", "#f4cccc", "#d9d2e9", "#fce5cd", "#d0e0e3"};
+  const auto it = std::find(w.types.begin(), w.types.end(), type);
+  if (type.empty() || it == w.types.end()) return "#ffffff";
+  return fills[static_cast<std::size_t>(it - w.types.begin()) % std::size(fills)];
 }
 
 }  // namespace
@@ -48,7 +50,7 @@ std::string scene_dot_text(const WorldResult& w) {
     const std::string label = u.type_probs.empty()
                                   ? fmt::format("{}\\n{}", u.id, escape(u.type))
                                   : fmt::format("{}\\n{} ({:.2f})", u.id, escape(u.type), p);
-    out += fmt::format("  {} [label=\"{}\", fillcolor=\"{}\"];\n", node(u.id), label, fill_of(u.type));
+    out += fmt::format("  {} [label=\"{}\", fillcolor=\"{}\"];\n", node(u.id), label, fill_of(w, u.type));
   }
   bool outside = false;
   for (const auto& d : w.doors) outside = outside || d.unit_a == 0 || d.unit_b == 0;

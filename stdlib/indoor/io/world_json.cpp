@@ -110,6 +110,8 @@ ordered_json world_to_json(const WorldResult& w) {
   out["units"] = units;
   out["doors"] = doors;
   out["adjacent"] = adjacent;
+  if (!w.types.empty()) out["types"] = w.types;
+  if (w.queries.is_object()) out["queries"] = w.queries;
   out["metrics"] = metrics;
   return out;
 }

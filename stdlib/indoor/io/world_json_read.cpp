@@ -131,6 +131,17 @@ WorldResult parse_world_json(const std::string& text, const std::string& name) {
       w.adjacent.emplace_back(r.integer(adj[i][0], at + "[0]"), r.integer(adj[i][1], at + "[1]"));
     }
   }
+  if (root.contains("types")) {
+    const json& t = r.array(root["types"], "types");
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      if (!t[i].is_string()) r.fail("types[" + std::to_string(i) + "]", "expected a string");
+      w.types.push_back(t[i].get<std::string>());
+    }
+  }
+  if (root.contains("queries")) {
+    if (!root["queries"].is_object()) r.fail("queries", "expected an object");
+    w.queries = nlohmann::ordered_json::parse(root["queries"].dump());
+  }
   if (root.contains("metrics")) {
     const json& m = root["metrics"];
     if (!m.is_object()) r.fail("metrics", "expected an object");

@@ -13,6 +13,8 @@
 #include <utility>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "stdlib/indoor/io/occupancy_map.h"
 #include "stdlib/indoor/rect.h"
 
@@ -20,7 +22,7 @@ namespace ksmc::stdlib::indoor::io {
 
 struct UnitResult {
   int id = 0;                                 // > 0; 0 means "no unit" in labels.png and doors
-  std::string type;                           // "room", "corridor", "hall", "other"
+  std::string type;                           // a member of WorldResult::types, "" when untyped
   std::map<std::string, double> type_probs;   // marginals of the type query atoms
   std::array<Point2, 4> corners{};            // in order around the rectangle
 };
@@ -56,6 +58,13 @@ struct WorldResult {
   // Integral values are written as JSON integers.
   std::map<std::string, double> metrics;
   std::vector<TraceSample> trace;              // for trace.png; not part of world.json
+  // The unit types (the domain's exactly-one-of group over units, in declaration order): they
+  // pick the node colours of scene.dot. Written as "types" when not empty.
+  std::vector<std::string> types;
+  // The marginal of every ground query atom, {"Room": {"u3": 0.91}, "SaLe": {"u3,u7": 0.8}}
+  // (units named u<id>; runtime::domain::Semantics::queries_json). Written as "queries", in
+  // its own order, when it is an object.
+  nlohmann::ordered_json queries;
 };
 
 // Fills map info (size, resolution, origin, counts) from a loaded map; `source` is written

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <memory>
 #include <sstream>
 
+#include "runtime/domain/kernels.h"
 #include "stdlib/indoor/detect/orientation.h"
 #include "stdlib/indoor/detect/rpb.h"
 #include "stdlib/indoor/detect/wbu.h"
@@ -13,6 +15,7 @@
 #include "stdlib/indoor/io/world_writer.h"
 #include "stdlib/indoor/kit/indoor_model.h"
 #include "stdlib/indoor/kit/solid_interior.h"
+#include "stdlib/indoor/blocks/walls.h"
 
 namespace ksmc::stdlib::indoor::kit {
 
@@ -23,20 +26,6 @@ namespace mcmc = runtime::mcmc;
 namespace {
 
 constexpr double kPiD = 3.14159265358979323846;
-
-// .ksm order (0 wall/occupied, 1 unknown, 2 free) -> enum order (Free 0, Unknown 1, Wall/Occupied 2).
-LikelihoodTable to_table(const Lut& lut) {
-  LikelihoodTable t;
-  for (std::size_t w = 0; w < 3; ++w)
-    for (std::size_t m = 0; m < 3; ++m) t.p[2 - w][2 - m] = lut[w][m];
-  return t;
-}
-
-// A weight psi >= 0 of the .ksm (log prior -= psi per count) as the WeakPriorParams factor.
-double factor_of(double psi) {
-  const double f = std::exp(-psi);
-  return std::clamp(f, std::numeric_limits<double>::min(), std::nextafter(1.0, 0.0));
-}
 
 Point2 parse_robot(const std::string& text, const io::OccupancyMap& map) {
   const auto comma = text.find(',');
@@ -73,34 +62,28 @@ io::WorldResult make_result(IndoorModel& m, const io::OccupancyMap& map, const s
   r.map = io::map_info_of(map, source);
   const World& w = m.scored().world();
   const auto sem = m.final_semantics();
-  static const char* const kTypeNames[kTypes] = {"room", "corridor", "hall", "other"};
-  const auto& preds = m.input().settings.semantic.type_predicates;
+  if (sem) {
+    r.types = m.semantics()->type_names();
+    r.queries = m.semantics()->queries_json(*sem);
+  }
   for (std::size_t i = 0; i < w.units().size(); ++i) {
     const Unit& u = w.units()[i];
     io::UnitResult ur;
     ur.id = static_cast<int>(u.id);
     ur.corners = u.rect.corners();
-    if (sem) {
-      const UnitSemantics& us = sem->units[i];
-      ur.type = kTypeNames[us.type];
-      for (int k = 0; k < kTypes; ++k) ur.type_probs[preds[static_cast<std::size_t>(k)]] = us.type_probs[static_cast<std::size_t>(k)];
-    } else {
-      const auto g = classify_unit(u.rect, map.resolution, m.input().settings.semantic.classifier);
-      ur.type = g == GeomClass::RoomLike ? "room" : g == GeomClass::CorridorLike ? "corridor" : "hall";
+    if (sem && sem->type[i] >= 0) {
+      ur.type = r.types[static_cast<std::size_t>(sem->type[i])];
+      for (std::size_t k = 0; k < r.types.size(); ++k) ur.type_probs[r.types[k]] = sem->type_probs[i][k];
     }
     r.units.push_back(std::move(ur));
   }
   for (const Door& d : w.doors())
     r.doors.push_back({static_cast<int>(d.id), static_cast<int>(d.unit_a), static_cast<int>(d.unit_b), {d.a, d.b}});
-  if (sem) {
-    for (auto [a, b] : sem->adjacent) r.adjacent.emplace_back(static_cast<int>(a), static_cast<int>(b));
-  } else {
-    const auto units = w.units();
-    for (std::size_t i = 0; i < units.size(); ++i)
-      for (std::size_t j = i + 1; j < units.size(); ++j)
-        if (connecting_walls(units[i].rect, units[j].rect, m.input().settings.semantic.adjacent_dilate_cells))
-          r.adjacent.emplace_back(static_cast<int>(units[i].id), static_cast<int>(units[j].id));
-  }
+  const auto units = w.units();
+  for (std::size_t i = 0; i < units.size(); ++i)
+    for (std::size_t j = i + 1; j < units.size(); ++j)
+      if (blocks::connecting_walls(units[i].rect, units[j].rect, blocks::kDefaultDilateCells))
+        r.adjacent.emplace_back(static_cast<int>(units[i].id), static_cast<int>(units[j].id));
   const double secs = run.seconds;
   r.metrics["cell_prediction_rate"] = m.scored().cell_prediction_rate();
   r.metrics["iterations"] = static_cast<double>(run.iterations);
@@ -122,10 +105,64 @@ io::WorldResult make_result(IndoorModel& m, const io::OccupancyMap& map, const s
   return r;
 }
 
-cli::DomainSetup load(const dom::DomainConfig& config, const dom::MlnBinding& binding, const cli::DomainInput& in) {
+// Fixed unit candidates of each pool (WBU, and RPB with --robot) and the FSU frame.
+struct FixedSources {
+  std::vector<std::vector<CandidateUnit>> units;
+  double frame_deg = 0.0;
+  std::size_t wbu_count = 0;
+  bool rpb_found = false;
+};
+
+FixedSources fixed_sources(const KitPlan& plan, const io::OccupancyMap& map, const cli::DomainInput& in) {
+  FixedSources out;
+  const double res = map.resolution;
+  std::map<std::pair<double, int>, std::vector<CandidateUnit>> wbu_runs;  // by (min_size, max_units)
+  bool framed = false;
+  for (const auto& pool : plan.pools)
+    for (const auto& w : pool.wbu) {
+      const auto key = std::make_pair(w.min_size, w.max_units);
+      if (wbu_runs.count(key)) continue;
+      detect::WbuParams wp;
+      wp.min_side = w.min_size / res;
+      wp.max_candidates = static_cast<std::size_t>(w.max_units);
+      const auto wbu = detect::detect_wbu_units(map.grid, wp);
+      wbu_runs[key] = to_unit_candidates(wbu.candidates);
+      if (!framed) {
+        out.wbu_count = wbu.candidates.size();
+        if (!wbu.frames_deg.empty()) out.frame_deg = wbu.frames_deg.front();
+        framed = true;
+      }
+    }
+  if (!framed) out.frame_deg = detect::dominant_orientation(map.grid).angle_deg;
+  const bool robot = in.flags.given("robot");
+  bool any_rpb = false;
+  for (const auto& pool : plan.pools) {
+    auto& units = out.units.emplace_back();
+    for (const auto& w : pool.wbu) {
+      const auto& c = wbu_runs.at({w.min_size, w.max_units});
+      units.insert(units.end(), c.begin(), c.end());
+    }
+    for (const auto& rpb : pool.rpb) {
+      any_rpb = true;
+      if (!robot) continue;
+      detect::RpbParams rp;
+      rp.frame_deg = out.frame_deg;
+      rp.min_side = rpb.min_size / res;
+      if (auto c = detect::detect_rpb_unit(map.grid, parse_robot(in.flags.text("robot"), map), rp)) {
+        units.push_back({c->rect, c->weight});
+        out.rpb_found = true;
+      }
+    }
+  }
+  if (robot && !any_rpb) throw cli::UsageError("--robot: the domain file declares no detect.rpb source");
+  return out;
+}
+
+cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, const cli::DomainInput& in) {
   auto shared = std::make_shared<SharedInput>();
-  shared->settings = read_settings(config);
-  const IndoorSettings& s = shared->settings;
+  shared->binding = binding;
+  shared->plan = make_plan(*binding);
+  const KitPlan& plan = shared->plan;
   const std::filesystem::path path = in.inputs.at(0);
 
   io::ImageLoadOptions opts;
@@ -152,67 +189,37 @@ cli::DomainSetup load(const dom::DomainConfig& config, const dom::MlnBinding& bi
   const std::size_t solid_cells = unexplain_solid_interior(map->grid, solid_depth / res);
   shared->grid = map->grid;
   shared->resolution = res;
-  shared->binding = binding;
   shared->seed = in.seed;
   shared->tuning.semantic_every = flag_count(in.flags, "semantic-every");
   shared->tuning.semantic_after = flag_count(in.flags, "semantic-after");
   shared->tuning.source_refresh = flag_count(in.flags, "source-refresh");
 
-  // Proposal sources fixed for the run.
-  double frame_deg = 0.0;
-  std::size_t wbu_count = 0;
-  if (s.sources.wbu) {
-    detect::WbuParams wp;
-    wp.min_side = s.sources.wbu_min_size_m / res;
-    wp.max_candidates = static_cast<std::size_t>(s.sources.wbu_max_units);
-    const auto wbu = detect::detect_wbu_units(map->grid, wp);
-    shared->fixed_units = to_unit_candidates(wbu.candidates);
-    wbu_count = wbu.candidates.size();
-    if (!wbu.frames_deg.empty()) frame_deg = wbu.frames_deg.front();
-  } else {
-    frame_deg = detect::dominant_orientation(map->grid).angle_deg;
-  }
-  shared->frame_deg = frame_deg;
-  bool rpb_found = false;
-  if (in.flags.given("robot")) {
-    if (!s.sources.rpb) throw cli::UsageError("--robot: the domain file declares no detect.rpb source");
-    detect::RpbParams rp;
-    rp.frame_deg = frame_deg;
-    rp.min_side = s.sources.rpb_min_size_m / res;
-    if (auto c = detect::detect_rpb_unit(map->grid, parse_robot(in.flags.text("robot"), *map), rp)) {
-      shared->fixed_units.push_back({c->rect, c->weight});
-      rpb_found = true;
-    }
-  }
-
-  shared->score.tables = {to_table(s.lut), to_table(s.lenient_lut)};
-  shared->score.prior.psi1 = factor_of(s.psi1);
-  shared->score.prior.psi2 = factor_of(s.psi2);
-  shared->score.prior.angle_tolerance = s.tol_rad;
-  shared->kernel.shift_sigma = s.sources.wall_shift ? s.sources.wall_shift_sigma_cells : shared->kernel.shift_sigma;
+  FixedSources fixed = fixed_sources(plan, *map, in);
+  shared->fixed_units = std::move(fixed.units);
+  shared->frame_deg = fixed.frame_deg;
+  shared->score.tables = plan.tables;
+  shared->score.prior = plan.prior;
   shared->kernel.min_size = std::max(3.0, 0.3 / res);
   shared->kernel.orientation.enabled = true;
-  shared->kernel.orientation.dominant = frame_deg * kPiD / 180.0;
+  shared->kernel.orientation.dominant = fixed.frame_deg * kPiD / 180.0;
   shared->evidence = std::make_unique<MapEvidence>(map->grid, 1);
 
   cli::DomainSetup setup;
-  std::vector<mcmc::KernelInfo> infos;
-  for (const auto& [name, reverse] : s.kernels) {
-    setup.kernels.push_back(std::make_shared<IndoorKernel>(name, reverse, *kernel_kind(name)));
-    infos.push_back({name, reverse});
-  }
-  std::vector<mcmc::ScheduleRow> rows;
-  for (const auto& r : s.schedule) rows.push_back({r.begin, r.end, r.probabilities});
-  try {
-    setup.schedule = mcmc::Schedule(infos, rows);
-  } catch (const mcmc::ScheduleError& e) {
-    throw dom::ConfigError(config.source + ": schedule: " + e.what());
-  }
+  const blocks::KernelDecl* first = binding->kernels.data();  // KitPlan::kernels has the same order
+  dom::KernelTable table = dom::make_kernels(binding->kernels, binding->schedule, [first](const blocks::KernelDecl& d) {
+    return std::make_shared<IndoorKernel>(d.name, d.reverse, static_cast<std::size_t>(&d - first));
+  });
+  setup.kernels = std::move(table.kernels);
+  setup.schedule = std::move(table.schedule);
   std::shared_ptr<const SharedInput> cshared = shared;
-  // Check the MLN binding once, before any chain starts.
-  if (s.semantic.enabled) SemanticEngine check(s.semantic, binding, res, in.seed);
   setup.model_factory = [cshared](unsigned) { return std::make_unique<IndoorModel>(cshared); };
   if (map->image != map->source) setup.extra_inputs.push_back(map->image);
+  if (plan.semantic)
+    setup.evidence_db = [](mcmc::Model& best) {
+      auto& m = static_cast<IndoorModel&>(best);
+      const auto sem = m.final_semantics();
+      return m.semantics()->evidence_db(*sem);
+    };
   const std::string source = path.filename().string();
   setup.write_results = [map, source](const mcmc::RunResult& run, mcmc::Model& best, cli::OutputDir& out) {
     auto& m = static_cast<IndoorModel&>(best);
@@ -222,11 +229,11 @@ cli::DomainSetup load(const dom::DomainConfig& config, const dom::MlnBinding& bi
   extra["map"] = {{"rows", map->rows()}, {"cols", map->cols()}, {"resolution", res},
                   {"free", map->counts().free}, {"occupied", map->counts().occupied}, {"unknown", map->counts().unknown}};
   extra["warnings"] = map->warnings;
-  extra["wbu_candidates"] = wbu_count;
-  extra["rpb_candidate"] = rpb_found;
-  extra["frame_deg"] = frame_deg;
+  extra["wbu_candidates"] = fixed.wbu_count;
+  extra["rpb_candidate"] = fixed.rpb_found;
+  extra["frame_deg"] = fixed.frame_deg;
   extra["solid_interior"] = {{"depth_m", solid_depth}, {"cells_unexplained", solid_cells}};
-  extra["semantic"] = {{"enabled", s.semantic.enabled}, {"every", shared->tuning.semantic_every},
+  extra["semantic"] = {{"enabled", plan.semantic}, {"every", shared->tuning.semantic_every},
                        {"after", shared->tuning.semantic_after}};
   setup.summary_extra = std::move(extra);
   return setup;
@@ -234,12 +241,12 @@ cli::DomainSetup load(const dom::DomainConfig& config, const dom::MlnBinding& bi
 
 }  // namespace
 
-cli::DomainSpec domain_spec(const dom::DomainConfig& config, const dom::MlnBinding& binding) {
-  (void)read_settings(config);  // a call the kit does not implement fails here, naming its line
+cli::DomainSpec domain_spec(const blocks::Binding& b) {
+  auto binding = std::make_shared<const blocks::Binding>(b);
   cli::DomainSpec spec;
-  spec.name = config.domain.empty() ? "indoor" : config.domain;
+  spec.name = binding->domain;
   spec.version = "1.0";
-  spec.description = "semantic indoor maps: rooms, corridors, halls and doors from an occupancy grid";
+  spec.description = "semantic indoor maps: typed space units and doors from an occupancy grid";
   spec.inputs_help = "MAP.(png|pgm|yaml)";
   spec.default_iterations = 10000;
   using K = cli::DomainFlag::Kind;
@@ -252,7 +259,7 @@ cli::DomainSpec domain_spec(const dom::DomainConfig& config, const dom::MlnBindi
       {"source-refresh", "proposals between FSU / door candidate refreshes", "200", K::integer},
       {"solid-depth", "occupied cells farther than this (m) from every free cell are classified unexplained: the inside of solid black regions, e.g. a map's outside painted black (0 = eq. 3.7 as is)", "0.5", K::real},
   };
-  spec.load = [config, binding](const cli::DomainInput& in) { return load(config, binding, in); };
+  spec.load = [binding](const cli::DomainInput& in) { return load(binding, in); };
   return spec;
 }
 

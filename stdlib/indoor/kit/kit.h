@@ -1,5 +1,5 @@
-// The indoor stdlib kit: turns a DomainConfig (generated from domains/indoor.ksm) and the
-// generated Markov logic binding into the DomainSpec of the `indoor` binary:
+// The indoor stdlib kit: turns the binding generated from a domain file (docs/binding.md §3)
+// into the DomainSpec of the domain binary:
 //   indoor MAP.(png|pgm|yaml) --out DIR [--seed N] [--iterations N] [--resolution R]
 //          [--robot x,y] [--thresholds ros|bormann] [--semantic-every K] [--semantic-after N]
 //          [--source-refresh K]
@@ -7,12 +7,11 @@
 #pragma once
 
 #include "runtime/cli/domain_spec.h"
-#include "runtime/domain/config.h"
+#include "stdlib/indoor/blocks.h"
 
 namespace ksmc::stdlib::indoor::kit {
 
-// The config is validated on every load (ConfigError naming the call's `where`).
-runtime::cli::DomainSpec domain_spec(const runtime::domain::DomainConfig& config,
-                                     const runtime::domain::MlnBinding& binding);
+// The spec keeps its own copy of the binding.
+runtime::cli::DomainSpec domain_spec(const blocks::Binding& binding);
 
 }  // namespace ksmc::stdlib::indoor::kit

@@ -1,6 +1,9 @@
 #include "stdlib/tabletop/kit/domain_spec.h"
 
+#include <algorithm>
+#include <cctype>
 #include <iostream>
+#include <stdexcept>
 #include <span>
 #include <utility>
 
@@ -107,7 +110,16 @@ nlohmann::json scene_graph_with_queries(const TabletopModel& model, const Tablet
 nlohmann::json scene_graph_of(const TabletopModel& model) { return scene_graph_with_queries(model, result_of(model)); }
 
 std::string evidence_db_of(const TabletopModel& model) {
-  return model.semantics().evidence_db(model.outcome(), model.block_scene().names());
+  const std::vector<std::string> names = model.block_scene().names();
+  for (const auto& id : names) {
+    const bool ok = !id.empty() && std::all_of(id.begin(), id.end(), [](char c) {
+      return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+    });
+    if (!ok)
+      throw std::invalid_argument(fmt::format("--evidence-out: object id \"{}\" is not a valid .db constant "
+                                              "(letters, digits, '_', '-', '.')", id));
+  }
+  return model.semantics().evidence_db(model.outcome(), names);
 }
 
 namespace {

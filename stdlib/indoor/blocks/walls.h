@@ -1,0 +1,30 @@
+// Geometry behind the indoor extractors: the Table 3.6 size / aspect-ratio classifier and the
+// connecting walls of two units (adjacency, wall-length difference).
+#pragma once
+
+#include <optional>
+
+#include "stdlib/indoor/rect.h"
+
+namespace ksmc::stdlib::indoor::blocks {
+
+enum class GeomClass : unsigned char { RoomLike, CorridorLike, HallLike };
+
+// Table 3.6: hall-like when the longer side exceeds big_size_m; otherwise corridor-like when
+// longer / shorter exceeds big_ratio, else room-like. `resolution` in m per cell.
+GeomClass classify_unit(const OrientedRect& r, double resolution, double big_size_m, double big_ratio);
+
+// The connecting walls of two units: the pair of nearly parallel edges (within 10 degrees)
+// closest across and overlapping along by more than `dilate_cells`, both within
+// 2 * dilate + 1 cells. nullopt when none.
+struct WallPair {
+  int wall_a = 0, wall_b = 0;
+  double overlap = 0.0;                   // cells along the walls
+  double length_a = 0.0, length_b = 0.0;  // cells
+};
+std::optional<WallPair> connecting_walls(const OrientedRect& a, const OrientedRect& b, double dilate_cells);
+
+// The dilation of geom.adjacent's default (stdlib/indoor.ksm), used where a block has none.
+inline constexpr double kDefaultDilateCells = 2.0;
+
+}  // namespace ksmc::stdlib::indoor::blocks
