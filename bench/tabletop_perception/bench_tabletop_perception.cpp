@@ -15,7 +15,7 @@
 #include <fmt/format.h>
 
 #include "stdlib/tabletop/perception/cloud_likelihood.h"
-#include "stdlib/tabletop/perception/sim_cloud.h"
+#include "stdlib/tabletop/perception/sim/sim_cloud.h"
 
 namespace pc = ksmc::stdlib::tabletop::perception;
 

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <numbers>
 
-#include "stdlib/tabletop/perception/sim_cloud.h"
+#include "stdlib/tabletop/perception/sim/sim_cloud.h"
 
 using namespace ksmc::stdlib::tabletop::perception;
 

@@ -1,4 +1,4 @@
-#include "stdlib/tabletop/perception/sim_cloud.h"
+#include "stdlib/tabletop/perception/sim/sim_cloud.h"
 
 namespace ksmc::stdlib::tabletop::perception {
 
