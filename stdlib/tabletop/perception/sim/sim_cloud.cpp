@@ -15,12 +15,12 @@ std::vector<SimFamily> sim_families(int min_objects, int max_objects) {
   SimFamily singles = base("singles");
   singles.generator.layout.stack_height_odds = {1.0, 0.0, 0.0};
   singles.generator.layout.lean_rate = 0.0;
-  SimFamily leaning = base("leaning");
-  leaning.generator.layout.stack_height_odds = {1.0, 0.0, 0.0};
-  leaning.generator.layout.lean_rate = 0.4;
+  SimFamily propped = base("propped");
+  propped.generator.layout.stack_height_odds = {1.0, 0.0, 0.0};
+  propped.generator.layout.lean_rate = 0.4;
   SimFamily stacks = base("stacks");
   stacks.generator.layout.lean_rate = 0.0;
-  return {singles, leaning, stacks};
+  return {singles, propped, stacks};
 }
 
 SimFrame simulate_frame(std::uint64_t seed, const SimFamily& family) {

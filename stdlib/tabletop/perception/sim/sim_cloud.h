@@ -20,7 +20,7 @@ struct SimFamily {
   sim::DepthParams depth;
 };
 
-// "singles" (one box per column, none leaning), "leaning" (singles, 40 % dropped leaning
+// "singles" (one box per column, none leaning), "propped" (singles, 40 % dropped leaning
 // on a neighbour), "stacks" (columns of 1-3 boxes), each with `min_objects..max_objects`.
 std::vector<SimFamily> sim_families(int min_objects, int max_objects);
 
