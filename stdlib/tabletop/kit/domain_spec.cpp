@@ -17,6 +17,10 @@
 #include "stdlib/tabletop/kit/refine_kernel.h"
 #include "stdlib/tabletop/overlay.h"
 #include "stdlib/tabletop/scene_io.h"
+#ifdef KSMC_HAVE_PERCEPTION
+#include "stdlib/tabletop/perception/scene_from_cloud.h"
+#include "stdlib/tabletop/perception/scene_json.h"
+#endif
 
 namespace ksmc::stdlib::tabletop::kit {
 
@@ -56,6 +60,24 @@ void check_binding(const blocks::Binding& b) {
     }
   if (b.kernels.empty()) throw rd::ConfigError(where + ": the tabletop kit needs at least one kernel");
   for (const auto& k : b.kernels) RefineKernel check(k, true);  // throws for what it cannot run
+}
+
+// --cloud: the point-cloud front end (docs/perception.md); the boxes go to OUT/scene.json.
+Scene load_cloud_input(const cli::DomainInput& in) {
+#ifdef KSMC_HAVE_PERCEPTION
+  perception::CloudOptions options;
+  try {
+    options.units = perception::parse_units(in.flags.text("cloud-units"));
+  } catch (const std::invalid_argument& e) {
+    throw cli::UsageError(std::string("--cloud-units: ") + e.what());
+  }
+  perception::CloudScene cs = perception::scene_from_cloud(in.flags.text("cloud"), options);
+  cli::OutputDir(in.out_dir).write("scene.json", perception::scene_json_text(cs.scene));
+  return std::move(cs.scene);
+#else
+  (void)in;
+  throw cli::UsageError("--cloud: this tabletop was built without PCL");
+#endif
 }
 
 TabletopResult result_of(const TabletopModel& model) {
@@ -153,15 +175,24 @@ cli::DomainSpec domain_spec(const blocks::Binding& binding) {
   spec.inputs_help = "scene.json";
   spec.default_iterations = 2000;
   spec.flags = {{"input-format", "input format: scene (scene.json) or hope (HOPE meta_data.json)", "scene",
-                 cli::DomainFlag::Kind::text}};
+                 cli::DomainFlag::Kind::text},
+                {"cloud", "point cloud (.ply/.pcd) instead of scene.json: table and boxes found, OUT/scene.json written",
+                 "", cli::DomainFlag::Kind::path},
+                {"cloud-units", "units of the --cloud coordinates: m, cm or mm", "m", cli::DomainFlag::Kind::text}};
+  spec.min_inputs = 0;
   const blocks::Binding* b = &binding;
   // The binding is checked by make_setup inside `load`, where the CLI reports a ConfigError.
   spec.load = [b](const cli::DomainInput& in) {
     std::vector<std::string> warnings;
-    auto scene = std::make_shared<const Scene>(load_input(in.inputs.at(0), in.flags.text("input-format"), warnings));
+    const bool cloud = in.flags.given("cloud");
+    if (in.inputs.size() != (cloud ? 0u : 1u))
+      throw cli::UsageError(cloud ? "--cloud replaces the scene.json input" : "expected one scene.json input");
+    auto scene = std::make_shared<const Scene>(
+        cloud ? load_cloud_input(in) : load_input(in.inputs.at(0), in.flags.text("input-format"), warnings));
     for (const auto& w : warnings) std::cerr << "tabletop: warning: " << w << "\n";
     KitSetup k = make_setup(*b, scene);
     if (!scene->image.empty()) k.setup.extra_inputs.push_back(scene->image);
+    if (cloud) k.setup.extra_inputs.push_back(in.flags.text("cloud"));
     return std::move(k.setup);
   };
   return spec;

@@ -1,0 +1,27 @@
+// One box per cluster with one axis along the table normal: the minimal-area rectangle of
+// the footprint (the points projected on the table) and the height of the top surface.
+// The box stands on the table unless the cluster clearly starts above it.
+#pragma once
+
+#include "stdlib/tabletop/perception/cloud_io.h"
+#include "stdlib/tabletop/pose.h"
+
+namespace ksmc::stdlib::tabletop::perception {
+
+struct BoxFitOptions {
+  double footprint_trim = 0.003;  // quantile pulled in on each footprint side (noise points)
+  double top_quantile = 0.995;    // robust highest point ...
+  double top_band = 0.006;        // m; the top is the median height of the points this far below it
+  double float_gap = 0.03;        // m; a cluster whose 1 % height quantile is higher starts there
+  double min_size = 0.005;        // m, lower bound of every extent
+};
+
+struct UprightBox {
+  Pose pose;                      // table frame; axis 2 = table normal, axis 0 at yaw in [0, 90 deg)
+  Eigen::Vector3d size = Eigen::Vector3d::Zero();
+};
+
+// `points` in the table frame (z up, top at 0), at least one point.
+UprightBox fit_upright_box(const Points& points, const BoxFitOptions& options = {});
+
+}  // namespace ksmc::stdlib::tabletop::perception

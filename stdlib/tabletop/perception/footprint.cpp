@@ -1,0 +1,97 @@
+#include "stdlib/tabletop/perception/footprint.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace ksmc::stdlib::tabletop::perception {
+
+namespace {
+
+double cross(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+}
+
+// Quantile q of `values` (sorted in place), linear interpolation.
+double quantile(std::vector<double>& values, double q) {
+  std::sort(values.begin(), values.end());
+  const double pos = q * static_cast<double>(values.size() - 1);
+  const auto lo = static_cast<std::size_t>(std::floor(pos));
+  const std::size_t hi = std::min(lo + 1, values.size() - 1);
+  return values[lo] + (pos - static_cast<double>(lo)) * (values[hi] - values[lo]);
+}
+
+// Turns (u, half) into the canonical form with the angle of u in [0, 90 deg).
+void canonicalise(Rect2& r) {
+  for (int k = 0; k < 4; ++k) {
+    const double angle = std::atan2(r.u.y(), r.u.x());
+    if (angle >= 0.0 && angle < 0.5 * 3.14159265358979323846 - 1e-12) return;
+    r.u = Eigen::Vector2d(r.u.y(), -r.u.x());  // rotate by -90 deg: sides swap
+    std::swap(r.half.x(), r.half.y());
+  }
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector2d> convex_hull(std::vector<Eigen::Vector2d> p) {
+  std::sort(p.begin(), p.end(), [](const auto& a, const auto& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+  p.erase(std::unique(p.begin(), p.end()), p.end());
+  if (p.size() < 3) return p;
+  std::vector<Eigen::Vector2d> h(2 * p.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= 1e-12) --k;
+    h[k++] = p[i];
+  }
+  for (std::size_t i = p.size() - 1, t = k + 1; i-- > 0;) {
+    while (k >= t && cross(h[k - 2], h[k - 1], p[i]) <= 1e-12) --k;
+    h[k++] = p[i];
+  }
+  h.resize(k - 1);
+  return h;
+}
+
+Rect2 min_area_rect(const std::vector<Eigen::Vector2d>& points, double trim) {
+  Rect2 best;
+  if (points.empty()) return best;
+  const std::vector<Eigen::Vector2d> hull = convex_hull(points);
+  double best_area = std::numeric_limits<double>::infinity();
+  auto try_direction = [&](const Eigen::Vector2d& u) {
+    const Eigen::Vector2d v(-u.y(), u.x());
+    double lo_u = std::numeric_limits<double>::infinity(), hi_u = -lo_u, lo_v = lo_u, hi_v = -lo_u;
+    for (const auto& q : hull) {
+      lo_u = std::min(lo_u, q.dot(u)), hi_u = std::max(hi_u, q.dot(u));
+      lo_v = std::min(lo_v, q.dot(v)), hi_v = std::max(hi_v, q.dot(v));
+    }
+    const double area = (hi_u - lo_u) * (hi_v - lo_v);
+    if (area < best_area - 1e-15) {
+      best_area = area;
+      best.u = u;
+      best.half = 0.5 * Eigen::Vector2d(hi_u - lo_u, hi_v - lo_v);
+      best.center = 0.5 * (lo_u + hi_u) * u + 0.5 * (lo_v + hi_v) * v;
+    }
+  };
+  if (hull.size() < 2) {
+    try_direction(Eigen::Vector2d::UnitX());
+  } else {
+    for (std::size_t i = 0; i < hull.size(); ++i) {
+      const Eigen::Vector2d e = hull[(i + 1) % hull.size()] - hull[i];
+      if (e.norm() > 0.0) try_direction(e.normalized());
+    }
+  }
+  if (trim > 0.0 && points.size() >= 4) {
+    const Eigen::Vector2d u = best.u, v = best.v();
+    std::vector<double> su, sv;
+    su.reserve(points.size());
+    sv.reserve(points.size());
+    for (const auto& q : points) su.push_back(q.dot(u)), sv.push_back(q.dot(v));
+    const double lu = quantile(su, trim), hu = quantile(su, 1.0 - trim);
+    const double lv = quantile(sv, trim), hv = quantile(sv, 1.0 - trim);
+    best.half = 0.5 * Eigen::Vector2d(hu - lu, hv - lv);
+    best.center = 0.5 * (lu + hu) * u + 0.5 * (lv + hv) * v;
+  }
+  canonicalise(best);
+  return best;
+}
+
+}  // namespace ksmc::stdlib::tabletop::perception

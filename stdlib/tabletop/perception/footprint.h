@@ -1,0 +1,31 @@
+// Footprints on the table plane: 2D convex hull and the minimal-area enclosing rectangle
+// (one side of the minimal rectangle lies on a hull edge; Freeman & Shapira 1975).
+// Unlike a principal-axes fit, the rectangle does not depend on the point density, so a
+// square cross-section gets its true sides instead of an arbitrary (flipping) diagonal.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace ksmc::stdlib::tabletop::perception {
+
+struct Rect2 {
+  Eigen::Vector2d center = Eigen::Vector2d::Zero();
+  Eigen::Vector2d u = Eigen::Vector2d::UnitX();  // first side direction, angle in [0, 90 deg)
+  Eigen::Vector2d half = Eigen::Vector2d::Zero();  // half extents along u and along v = perp(u)
+
+  [[nodiscard]] Eigen::Vector2d v() const { return {-u.y(), u.x()}; }
+  [[nodiscard]] double area() const { return 4.0 * half.x() * half.y(); }
+};
+
+// Counter-clockwise hull without (nearly, 1e-12 m^2) collinear points (Andrew's monotone chain). Fewer than
+// three distinct points give the distinct points.
+std::vector<Eigen::Vector2d> convex_hull(std::vector<Eigen::Vector2d> points);
+
+// Minimal-area rectangle containing `points` (at least one point). With `trim` > 0 the
+// orientation is kept and each side is pulled in to the trim / (1 - trim) quantile of
+// the points' coordinates, which discards isolated noise points at the border.
+Rect2 min_area_rect(const std::vector<Eigen::Vector2d>& points, double trim = 0.0);
+
+}  // namespace ksmc::stdlib::tabletop::perception

@@ -1,0 +1,50 @@
+// The point-cloud front end (issue 13, part 1): cloud file -> table frame -> clusters ->
+// one upright box per cluster -> the stdlib/tabletop Scene the kit consumes, plus the
+// per-object points the cloud likelihood needs. The cloud frame is taken as the camera
+// frame (Scene::table_in_camera = the table frame in the cloud frame).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "stdlib/tabletop/perception/box_fit.h"
+#include "stdlib/tabletop/perception/cloud_io.h"
+#include "stdlib/tabletop/perception/clusters.h"
+#include "stdlib/tabletop/perception/stack_split.h"
+#include "stdlib/tabletop/perception/table_plane.h"
+#include "stdlib/tabletop/scene.h"
+
+namespace ksmc::stdlib::tabletop::perception {
+
+struct CloudOptions {
+  Units units = Units::m;
+  TableOptions table;
+  ClusterOptions clusters;
+  BoxFitOptions box;
+  bool split_stacks = true;  // several boxes per cluster (stack_split.h)
+  StackOptions stacks;
+  Camera camera{615.0, 615.0, 320.0, 240.0, 640, 480};  // written to scene.json (overlay)
+  double table_thickness = 0.05;                        // m, the slab below z = 0
+  std::string id_prefix = "obj_";
+};
+
+struct CloudScene {
+  Scene scene;                         // objects in the table frame, ids <prefix>0..
+  TableFit table;
+  std::vector<Points> object_points;   // table frame, the points of each scene object's box
+  std::vector<int> cluster_of;         // per scene object: its cluster (stacked boxes share one)
+  std::size_t cloud_points = 0;
+  Points cloud_in_table;               // the whole cloud in the table frame
+  Eigen::Vector3d sensor_in_table = Eigen::Vector3d::Zero();  // the cloud origin
+};
+
+// The clusters mapped back into the cloud frame.
+std::vector<Points> clusters_in_cloud(const CloudScene& cs);
+
+// Throws CloudError naming `path` (unreadable, empty, NaN, no plane, no object above it).
+CloudScene scene_from_cloud(const std::filesystem::path& path, const CloudOptions& options = {});
+// Same on points already in memory (metres); `source` names them in errors.
+CloudScene scene_from_points(const Points& cloud, const std::string& source, const CloudOptions& options = {});
+
+}  // namespace ksmc::stdlib::tabletop::perception

@@ -1,0 +1,38 @@
+// Simulated clouds for the point-cloud front end: a physics-generated scene (stdlib/tabletop
+// /sim, no hidden or false estimates: the sensor sees what is there) rendered as a depth
+// cloud, and the front end's boxes scored against the settled boxes (camera frame).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "stdlib/tabletop/perception/scene_from_cloud.h"
+#include "stdlib/tabletop/perception/truth_eval.h"
+#include "stdlib/tabletop/sim/depth_render.h"
+#include "stdlib/tabletop/sim/generator.h"
+
+namespace ksmc::stdlib::tabletop::perception {
+
+struct SimFamily {
+  std::string name;
+  sim::GeneratorOptions generator;
+  sim::DepthParams depth;
+};
+
+// "singles" (one box per column, none leaning), "propped" (singles, 40 % dropped leaning
+// on a neighbour), "stacks" (columns of 1-3 boxes), each with `min_objects..max_objects`.
+std::vector<SimFamily> sim_families(int min_objects, int max_objects);
+
+struct SimFrame {
+  sim::GeneratedScene scene;
+  Points cloud;                 // camera frame
+  std::vector<TruthBox> truth;  // settled boxes, camera frame
+};
+
+SimFrame simulate_frame(std::uint64_t seed, const SimFamily& family);
+
+// Camera intrinsics of the simulated sensor as a Scene camera (written to scene.json).
+Camera scene_camera(const sim::Camera& c);
+
+}  // namespace ksmc::stdlib::tabletop::perception

@@ -1,0 +1,106 @@
+#include "stdlib/tabletop/perception/stack_split.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+
+#include "stdlib/tabletop/perception/footprint.h"
+
+namespace ksmc::stdlib::tabletop::perception {
+
+namespace {
+
+// Heights of the plateaus (top surfaces), highest first: histogram of cell maxima in
+// level_gap / 4 bins, a level is a peak: three neighbouring bins holding min_level_area
+// and peak_contrast times the four bins around them.
+std::vector<double> plateaus(const Points& points, const StackOptions& o) {
+  std::map<std::pair<long, long>, double> top;
+  for (const auto& p : points) {
+    const auto key = std::make_pair(std::lround(std::floor(p.x() / o.cell)), std::lround(std::floor(p.y() / o.cell)));
+    auto [it, fresh] = top.emplace(key, p.z());
+    if (!fresh) it->second = std::max(it->second, p.z());
+  }
+  const double bin = 0.25 * o.level_gap;
+  std::map<long, int> hist;
+  for (const auto& [k, h] : top) ++hist[std::lround(std::floor(h / bin))];
+  const int need = static_cast<int>(std::ceil(o.min_level_area / (o.cell * o.cell)));
+  std::vector<double> levels;
+  for (auto it = hist.rbegin(); it != hist.rend(); ++it) {
+    auto at = [&](long k) {
+      const auto f = hist.find(k);
+      return f == hist.end() ? 0 : f->second;
+    };
+    const long k = it->first;
+    const int count = at(k - 1) + at(k) + at(k + 1);
+    const int flank = at(k - 3) + at(k - 2) + at(k + 2) + at(k + 3);
+    const double h = (static_cast<double>(k) + 0.5) * bin;
+    // A flat top is a peak; a tilted face spreads evenly over the bins (count/flank = 3/4).
+    if (count < need || count < o.peak_contrast * flank) continue;
+    if (!levels.empty() && levels.back() - h < o.level_gap) continue;
+    levels.push_back(h);
+  }
+  return levels;
+}
+
+bool inside(const Rect2& r, const Eigen::Vector2d& p, double margin) {
+  const Eigen::Vector2d d = p - r.center;
+  return std::abs(d.dot(r.u)) <= r.half.x() + margin && std::abs(d.dot(r.v())) <= r.half.y() + margin;
+}
+
+// Share of rectangle a's area covered by rectangle b (sampled on a 20 x 20 grid).
+double covered(const Rect2& a, const Rect2& b) {
+  int in = 0;
+  for (int i = 0; i < 20; ++i)
+    for (int j = 0; j < 20; ++j) {
+      const Eigen::Vector2d p = a.center + ((i + 0.5) / 10.0 - 1.0) * a.half.x() * a.u + ((j + 0.5) / 10.0 - 1.0) * a.half.y() * a.v();
+      in += inside(b, p, 0.0);
+    }
+  return in / 400.0;
+}
+
+std::vector<Eigen::Vector2d> flat(const Points& pts) {
+  std::vector<Eigen::Vector2d> f;
+  for (const auto& p : pts) f.emplace_back(p.x(), p.y());
+  return f;
+}
+
+}  // namespace
+
+std::vector<UprightBox> fit_stacked_boxes(const Points& points, const BoxFitOptions& box, const StackOptions& o) {
+  std::vector<UprightBox> upper;  // found from the top down
+  Points rest = points;
+  while (static_cast<int>(upper.size()) + 1 < o.max_boxes) {
+    const std::vector<double> levels = plateaus(rest, o);
+    if (levels.size() < 2) break;
+    const double below = levels[1];
+    Points top;
+    for (const auto& p : rest)
+      if (p.z() > below + 0.5 * o.level_gap) top.push_back(p);
+    if (top.size() < o.min_points) break;
+    const Rect2 column = min_area_rect(flat(top), box.footprint_trim);
+    Points remaining;
+    for (const auto& p : rest)
+      if (p.z() <= below + 0.5 * o.level_gap && !inside(column, {p.x(), p.y()}, o.column_margin)) remaining.push_back(p);
+    if (remaining.size() < o.min_points) break;
+    const Rect2 under = min_area_rect(flat(remaining), box.footprint_trim);
+    UprightBox b = fit_upright_box(top, box);
+    if (covered(column, under) >= o.min_support) {  // resting on the rest: bottom at the plateau below
+      const double top_z = b.pose.t.z() + 0.5 * b.size.z();
+      b.size.z() = std::max(top_z - below, box.min_size);
+      b.pose.t.z() = below + 0.5 * b.size.z();
+    } else {  // a merged neighbour standing on the table: its column goes down to the table
+      Points whole;
+      for (const auto& p : rest)
+        if (inside(column, {p.x(), p.y()}, o.column_margin)) whole.push_back(p);
+      b = fit_upright_box(whole, box);
+    }
+    upper.push_back(b);
+    rest = std::move(remaining);
+  }
+  std::vector<UprightBox> out{fit_upright_box(rest, box)};
+  out.insert(out.end(), upper.rbegin(), upper.rend());
+  return out;
+}
+
+}  // namespace ksmc::stdlib::tabletop::perception

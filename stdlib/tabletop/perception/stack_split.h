@@ -1,0 +1,31 @@
+// Splitting one cluster into stacked boxes. Euclidean clustering merges a box resting on
+// another box (and neighbours closer than the tolerance). The top surfaces tell them
+// apart: the maximum height per footprint cell (side faces project onto the outline, so
+// cell maxima are top heights) forms one plateau per box top. Peeling from the top: the
+// points above the next plateau down are the upper box; the rest, without the upper box's
+// column, is fitted again. The upper box rests on the rest when the rest's footprint
+// covers most of its own, otherwise it stands on the table (a merged taller neighbour).
+#pragma once
+
+#include <vector>
+
+#include "stdlib/tabletop/perception/box_fit.h"
+
+namespace ksmc::stdlib::tabletop::perception {
+
+struct StackOptions {
+  double cell = 0.005;           // m, footprint grid
+  double level_gap = 0.02;       // m, plateaus closer in height are one level
+  double min_level_area = 0.0006; // m^2 of cells at a plateau's height (6 cm^2)
+  double peak_contrast = 2.0;    // plateau cells / cells of the bins beside it (tilted faces: 0.75)
+  double column_margin = 0.006;  // m, the upper box's column is its rectangle grown by this
+  double min_support = 0.5;      // share of the upper footprint over the rest that means "stacked"
+  std::size_t min_points = 40;   // a part with fewer points is dropped
+  int max_boxes = 6;
+};
+
+// Boxes of one cluster (table frame), lowest first. Always at least one box.
+std::vector<UprightBox> fit_stacked_boxes(const Points& points, const BoxFitOptions& box = {},
+                                          const StackOptions& options = {});
+
+}  // namespace ksmc::stdlib::tabletop::perception

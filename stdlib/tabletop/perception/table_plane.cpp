@@ -1,0 +1,92 @@
+#include "stdlib/tabletop/perception/table_plane.h"
+
+#include <cmath>
+
+#include <fmt/format.h>
+#include <pcl/ModelCoefficients.h>
+#include <pcl/PointIndices.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+#include <pcl/sample_consensus/method_types.h>
+#include <pcl/sample_consensus/model_types.h>
+#include <pcl/segmentation/sac_segmentation.h>
+
+#include "stdlib/tabletop/perception/footprint.h"
+
+namespace ksmc::stdlib::tabletop::perception {
+
+Points to_table_frame(const Points& cloud, const Pose& table_in_cloud) {
+  const Pose inv = table_in_cloud.inverse();
+  const Eigen::Matrix3d r = inv.rotation();
+  Points out;
+  out.reserve(cloud.size());
+  for (const auto& p : cloud) out.push_back(r * p + inv.t);
+  return out;
+}
+
+TableFit fit_table(const Points& cloud, const std::string& source, const TableOptions& options) {
+  if (cloud.size() < 3) throw CloudError(fmt::format("{}: no table plane: only {} points", source, cloud.size()));
+  pcl::PointCloud<pcl::PointXYZ>::Ptr pc(new pcl::PointCloud<pcl::PointXYZ>);
+  pc->reserve(cloud.size());
+  for (const auto& p : cloud)
+    pc->push_back(pcl::PointXYZ(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())));
+
+  pcl::SACSegmentation<pcl::PointXYZ> seg;  // fixed-seed sampling: deterministic
+  seg.setOptimizeCoefficients(true);
+  seg.setModelType(pcl::SACMODEL_PLANE);
+  seg.setMethodType(pcl::SAC_RANSAC);
+  seg.setDistanceThreshold(options.distance_threshold);
+  seg.setMaxIterations(options.max_iterations);
+  seg.setInputCloud(pc);
+  pcl::PointIndices inliers;
+  pcl::ModelCoefficients coeff;
+  seg.segment(inliers, coeff);
+  const std::size_t needed = std::max(
+      options.min_inliers, static_cast<std::size_t>(std::ceil(options.min_inlier_fraction * static_cast<double>(cloud.size()))));
+  if (coeff.values.size() != 4 || inliers.indices.size() < needed)
+    throw CloudError(fmt::format("{}: no table plane: the best plane holds {} of {} points (need {}, band {} m)", source,
+                                 inliers.indices.size(), cloud.size(), needed, options.distance_threshold));
+
+  Eigen::Vector3d n(coeff.values[0], coeff.values[1], coeff.values[2]);
+  double d = coeff.values[3];
+  const double norm = n.norm();
+  n /= norm;
+  d /= norm;
+  // Up is the side with more points within side_band of the plane (the objects); ties
+  // point the normal at the cloud origin (the sensor, for camera-frame clouds).
+  long vote = 0;
+  for (const auto& p : cloud) {
+    const double s = n.dot(p) + d;
+    if (std::abs(s) > options.distance_threshold && std::abs(s) < options.side_band) vote += s > 0 ? 1 : -1;
+  }
+  if (vote < 0 || (vote == 0 && d < 0)) n = -n, d = -d;
+
+  // In-plane basis, then the minimal rectangle of the inliers fixes origin and x axis.
+  const Eigen::Vector3d a = std::abs(n.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  const Eigen::Vector3d e1 = (a - a.dot(n) * n).normalized();
+  const Eigen::Vector3d e2 = n.cross(e1);
+  const Eigen::Vector3d origin = -d * n;
+  std::vector<Eigen::Vector2d> flat;
+  flat.reserve(inliers.indices.size());
+  double ss = 0.0;
+  for (int idx : inliers.indices) {
+    const Eigen::Vector3d& p = cloud[static_cast<std::size_t>(idx)];
+    flat.emplace_back((p - origin).dot(e1), (p - origin).dot(e2));
+    const double s = n.dot(p) + d;
+    ss += s * s;
+  }
+  const Rect2 rect = min_area_rect(flat, options.extent_trim);
+  Eigen::Matrix3d r;
+  r.col(0) = rect.u.x() * e1 + rect.u.y() * e2;
+  r.col(2) = n;
+  r.col(1) = n.cross(r.col(0));
+  TableFit fit;
+  fit.table_in_cloud.t = origin + rect.center.x() * e1 + rect.center.y() * e2;
+  fit.table_in_cloud.q = Eigen::Quaterniond(r).normalized();
+  fit.extent = 2.0 * rect.half;
+  fit.inliers = inliers.indices.size();
+  fit.rms = std::sqrt(ss / static_cast<double>(inliers.indices.size()));
+  return fit;
+}
+
+}  // namespace ksmc::stdlib::tabletop::perception

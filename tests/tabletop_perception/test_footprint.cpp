@@ -1,0 +1,75 @@
+// Minimal-area rectangle and upright box fit, including the square cross-section case on
+// which a principal-axes fit flips its axes.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <numbers>
+
+#include "stdlib/tabletop/perception/box_fit.h"
+#include "stdlib/tabletop/perception/footprint.h"
+#include "synthetic_cloud.h"
+
+using namespace ksmc::stdlib::tabletop::perception;
+using ksmc::tests::perception::add_box;
+
+namespace {
+// Yaw difference modulo the rectangle's 90 degree symmetry, in degrees.
+double yaw_error_deg(double a, double b) {
+  double d = std::fmod(std::abs(a - b), 0.5 * std::numbers::pi);
+  return std::min(d, 0.5 * std::numbers::pi - d) * 180.0 / std::numbers::pi;
+}
+double yaw_of(const UprightBox& b) {
+  const Eigen::Vector3d x = b.pose.rotation().col(0);
+  return std::atan2(x.y(), x.x());
+}
+}  // namespace
+
+TEST_CASE("convex hull and minimal rectangle of a rotated rectangle", "[perception][footprint]") {
+  std::vector<Eigen::Vector2d> pts;
+  const double yaw = 0.4;
+  const Eigen::Rotation2Dd r(yaw);
+  for (double x = -0.1; x <= 0.1 + 1e-12; x += 0.01)
+    for (double y = -0.03; y <= 0.03 + 1e-12; y += 0.01) pts.push_back(Eigen::Vector2d(0.2, -0.1) + r * Eigen::Vector2d(x, y));
+  CHECK(convex_hull(pts).size() == 4);
+  const Rect2 rect = min_area_rect(pts);
+  CHECK(rect.center.x() == Approx(0.2).margin(1e-9));
+  CHECK(rect.center.y() == Approx(-0.1).margin(1e-9));
+  CHECK(rect.area() == Approx(0.2 * 0.06).epsilon(1e-9));
+  CHECK(std::atan2(rect.u.y(), rect.u.x()) >= 0.0);
+  CHECK(std::atan2(rect.u.y(), rect.u.x()) < 0.5 * std::numbers::pi);
+  CHECK(yaw_error_deg(std::atan2(rect.u.y(), rect.u.x()), yaw) < 1e-6);
+  // Trimming keeps the orientation and pulls each side to a quantile.
+  pts.push_back(Eigen::Vector2d(0.2, -0.1) + r * Eigen::Vector2d(0.0, 0.05));  // one far noise point
+  CHECK(min_area_rect(pts, 0.01).half.minCoeff() < 0.031);
+}
+
+TEST_CASE("square cross-section: the vertical axis stays vertical and the sides do not flip",
+          "[perception][footprint][flip]") {
+  // Tall carton with a square footprint (milk / juice) and a flat square box, every yaw
+  // over the quarter turn. A principal-axes fit has two equal in-plane moments here.
+  for (const Eigen::Vector3d& size : {Eigen::Vector3d(0.07, 0.07, 0.19), Eigen::Vector3d(0.1, 0.1, 0.04)}) {
+    for (int k = 0; k < 18; ++k) {
+      const double yaw = k * 5.0 * std::numbers::pi / 180.0;
+      ksmc::stdlib::tabletop::perception::Points pts;
+      add_box(pts, 0.05, -0.02, yaw, size, 0.004);
+      const UprightBox b = fit_upright_box(pts);
+      INFO("size " << size.transpose() << " yaw " << k * 5 << " deg -> fitted " << b.size.transpose());
+      CHECK(b.pose.rotation().col(2).z() == Approx(1.0));
+      CHECK(b.size.z() == Approx(size.z()).margin(0.003));
+      CHECK(b.size.x() == Approx(size.x()).margin(0.003));
+      CHECK(b.size.y() == Approx(size.y()).margin(0.003));
+      CHECK(yaw_error_deg(yaw_of(b), yaw) < 0.5);
+      CHECK(b.pose.t.x() == Approx(0.05).margin(0.002));
+      CHECK(b.pose.t.y() == Approx(-0.02).margin(0.002));
+      CHECK(b.pose.t.z() == Approx(0.5 * size.z()).margin(0.002));
+    }
+  }
+}
+
+TEST_CASE("a cluster that starts well above the table keeps its bottom", "[perception][footprint]") {
+  ksmc::stdlib::tabletop::perception::Points pts;
+  add_box(pts, 0.0, 0.0, 0.0, Eigen::Vector3d(0.1, 0.06, 0.05), 0.004);
+  for (auto& p : pts) p.z() += 0.08;  // resting on something the cloud does not show
+  const UprightBox b = fit_upright_box(pts);
+  CHECK(b.pose.t.z() - 0.5 * b.size.z() == Approx(0.08).margin(0.003));
+}

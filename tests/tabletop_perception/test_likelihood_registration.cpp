@@ -1,0 +1,123 @@
+// Cloud likelihood (Gaussian on the point-to-surface distance, incremental per object) and
+// the rigid registration with unknown correspondences.
+#include <catch2/catch.hpp>
+
+#include <random>
+
+#include "stdlib/tabletop/perception/cloud_likelihood.h"
+#include "stdlib/tabletop/perception/registration.h"
+#include "synthetic_cloud.h"
+
+using namespace ksmc::stdlib::tabletop::perception;
+using ksmc::stdlib::tabletop::Obb;
+
+namespace {
+Obb upright(const Eigen::Vector3d& c, const Eigen::Vector3d& size, double yaw = 0.0) {
+  Obb b;
+  b.center = c;
+  b.axes = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  b.half = 0.5 * size;
+  return b;
+}
+}  // namespace
+
+TEST_CASE("surface distance inside and outside the box", "[perception][likelihood]") {
+  const Obb b = upright(Eigen::Vector3d::Zero(), Eigen::Vector3d(0.2, 0.1, 0.1));
+  CHECK(surface_distance(b, Eigen::Vector3d(0.1, 0.0, 0.0)) == Approx(0.0).margin(1e-12));
+  CHECK(surface_distance(b, Eigen::Vector3d(0.0, 0.0, 0.0)) == Approx(0.05));
+  CHECK(surface_distance(b, Eigen::Vector3d(0.13, 0.09, 0.0)) == Approx(std::hypot(0.03, 0.04)));
+}
+
+TEST_CASE("cloud likelihood peaks at the true box and updates incrementally", "[perception][likelihood]") {
+  const Eigen::Vector3d size(0.12, 0.06, 0.2);
+  Points a, b;
+  ksmc::tests::perception::add_box(a, 0.0, 0.0, 0.3, size, 0.01);
+  ksmc::tests::perception::add_box(b, 0.3, 0.1, 0.0, Eigen::Vector3d(0.08, 0.08, 0.05), 0.01);
+  const Obb ta = upright(Eigen::Vector3d(0, 0, 0.1), size, 0.3);
+  const Obb tb = upright(Eigen::Vector3d(0.3, 0.1, 0.025), Eigen::Vector3d(0.08, 0.08, 0.05));
+  CloudLikelihoodParams params;
+  params.robust = false;
+  const double at_truth = cloud_log_likelihood(a, ta, params);
+  for (const Eigen::Vector3d& shift : {Eigen::Vector3d(0.005, 0, 0), Eigen::Vector3d(0, 0, -0.01)}) {
+    Obb moved = ta;
+    moved.center += shift;
+    CHECK(cloud_log_likelihood(a, moved, params) < at_truth);
+  }
+  Obb turned = ta;
+  turned.axes = Eigen::AngleAxisd(0.35, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  CHECK(cloud_log_likelihood(a, turned, params) < at_truth);
+  // Robust: a far box costs a bounded amount per point.
+  Obb far = ta;
+  far.center.x() += 1.0;
+  const double capped = cloud_log_likelihood(a, far, {});
+  CHECK(capped == Approx(-static_cast<double>(a.size()) *
+                         (0.02 * 0.02 / (2 * 0.004 * 0.004) + std::log(0.004 * std::sqrt(2 * 3.14159265358979)))));
+
+  CloudLikelihood cl({a, b}, {ta, tb}, params);
+  CHECK(cl.total() == Approx(at_truth + cloud_log_likelihood(b, tb, params)));
+  Obb moved = tb;
+  moved.center.z() += 0.004;
+  const double predicted = cl.evaluate(1, moved);
+  const double delta = cl.update(1, moved);
+  CHECK(cl.term(1) == Approx(predicted));
+  CHECK(delta < 0.0);
+  CHECK(cl.total() == Approx(cl.term(0) + cl.term(1)));
+  CHECK(cl.total() == Approx(at_truth + cloud_log_likelihood(b, moved, params)));
+  CHECK(cloud_log_likelihood({}, ta) == 0.0);
+}
+
+TEST_CASE("registration recovers a rigid motion and the matching from shuffled points", "[perception][registration]") {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-0.3, 0.3);
+  std::normal_distribution<double> noise(0.0, 0.002);
+  std::vector<Eigen::Vector3d> src;
+  for (int i = 0; i < 10; ++i) src.emplace_back(u(rng), u(rng), 0.1 * u(rng));
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  t.linear() = Eigen::AngleAxisd(2.8, Eigen::Vector3d(0.1, 0.2, 1.0).normalized()).toRotationMatrix();
+  t.translation() = Eigen::Vector3d(0.7, -0.6, -0.1);
+  std::vector<int> perm{3, 7, 0, 9, 1, 5, 8, 2, 6, 4};
+  std::vector<Eigen::Vector3d> dst(10);
+  for (int i = 0; i < 10; ++i)
+    dst[static_cast<std::size_t>(perm[static_cast<std::size_t>(i)])] =
+        t * src[static_cast<std::size_t>(i)] + Eigen::Vector3d(noise(rng), noise(rng), noise(rng));
+  src.emplace_back(5.0, 5.0, 5.0);  // an extra source point with no partner
+  const Registration r = register_unmatched(src, dst, 0.02);
+  CHECK(r.matched == 10);
+  for (int i = 0; i < 10; ++i) CHECK(r.match[static_cast<std::size_t>(i)] == perm[static_cast<std::size_t>(i)]);
+  CHECK(r.match[10] == -1);
+  CHECK(r.rms < 0.005);
+  CHECK((r.source_to_target.linear() - t.linear()).norm() < 0.03);
+}
+
+TEST_CASE("free space: a box where the sensor sees through it is penalised", "[perception][likelihood]") {
+  const Obb real = upright(Eigen::Vector3d(0, 0, 0.05), Eigen::Vector3d(0.1, 0.1, 0.1));
+  FreeSpace fs;
+  fs.sensor = Eigen::Vector3d(0.1, -0.2, 0.9);
+  Points raw;
+  ksmc::tests::perception::add_table(raw, 0.3, 0.3, 0.01);
+  ksmc::tests::perception::add_box(raw, 0.0, 0.0, 0.0, Eigen::Vector3d(0.1, 0.1, 0.1), 0.005);
+  // Keep what the sensor sees: rays not blocked by the real box (1 mm before the point).
+  FreeSpace probe = fs;
+  probe.margin = 0.001;
+  for (const auto& p : raw) {
+    probe.points = {p};
+    if (see_through_count(real, probe) == 0) fs.points.push_back(p);
+  }
+  REQUIRE(fs.points.size() < raw.size());  // the box hides part of the table and its far faces
+  CHECK(see_through_count(real, fs) == 0);
+  const Obb floating = upright(Eigen::Vector3d(0.18, 0.15, 0.12), Eigen::Vector3d(0.06, 0.06, 0.06));
+  const std::size_t blocked = see_through_count(floating, fs);
+  CHECK(blocked > 20);
+
+  Points own;
+  for (const auto& p : fs.points)
+    if (real.contains(p, 0.002)) own.push_back(p);
+  CloudLikelihood cl({own, {}}, {real, floating}, {}, fs);
+  CHECK(cl.term(1) == Approx(-fs.cost * static_cast<double>(blocked)));
+  CHECK(cl.term(0) == Approx(cloud_log_likelihood(own, real)));
+  // Moving the false box out of the sensor's view removes the penalty, incrementally.
+  Obb away = floating;
+  away.center = Eigen::Vector3d(0.6, 0.6, 0.03);
+  CHECK(cl.update(1, away) == Approx(fs.cost * static_cast<double>(blocked)));
+  CHECK(cl.total() == Approx(cl.term(0)));
+}

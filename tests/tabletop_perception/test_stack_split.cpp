@@ -1,0 +1,62 @@
+// One cluster, several boxes: a box resting on a box, two touching neighbours of different
+// heights, and a tilted box that must stay one box.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+
+#include "stdlib/tabletop/perception/stack_split.h"
+#include "synthetic_cloud.h"
+
+using namespace ksmc::stdlib::tabletop::perception;
+using ksmc::tests::perception::add_box;
+
+namespace {
+// Box surface without the faces a camera above cannot see (the bottom) shifted up by `lift`.
+void add_lifted(Points& pts, double cx, double cy, double yaw, const Eigen::Vector3d& size, double lift) {
+  Points b;
+  add_box(b, cx, cy, yaw, size, 0.004);
+  for (auto& p : b) pts.emplace_back(p.x(), p.y(), p.z() + lift);
+}
+}  // namespace
+
+TEST_CASE("stack split: a box on a box gives two boxes with the right heights", "[perception][stack]") {
+  Points pts;
+  // Lower box 20 x 14 x 6 cm; its top face under the upper box is not visible.
+  add_box(pts, 0.0, 0.0, 0.2, Eigen::Vector3d(0.2, 0.14, 0.06), 0.004);
+  const Eigen::Matrix3d r = Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  pts.erase(std::remove_if(pts.begin(), pts.end(), [&](const Eigen::Vector3d& p) {
+              const Eigen::Vector3d l = r.transpose() * (p - Eigen::Vector3d(0.02, 0.01, 0.0));
+              return p.z() > 0.059 && std::abs(l.x()) < 0.06 && std::abs(l.y()) < 0.04;
+            }), pts.end());
+  add_lifted(pts, 0.02, 0.01, 0.2, Eigen::Vector3d(0.12, 0.08, 0.05), 0.06);
+  const auto boxes = fit_stacked_boxes(pts);
+  REQUIRE(boxes.size() == 2);
+  CHECK(boxes[0].size.z() == Approx(0.06).margin(0.005));
+  CHECK(boxes[0].pose.t.z() == Approx(0.03).margin(0.004));
+  CHECK(std::max(boxes[0].size.x(), boxes[0].size.y()) == Approx(0.2).margin(0.005));
+  CHECK(boxes[1].size.z() == Approx(0.05).margin(0.012));
+  CHECK(boxes[1].pose.t.z() - 0.5 * boxes[1].size.z() == Approx(0.06).margin(0.012));
+  CHECK(std::max(boxes[1].size.x(), boxes[1].size.y()) == Approx(0.12).margin(0.005));
+}
+
+TEST_CASE("stack split: touching neighbours of different heights both stand on the table", "[perception][stack]") {
+  Points pts;
+  add_box(pts, 0.0, 0.0, 0.0, Eigen::Vector3d(0.1, 0.1, 0.05), 0.004);
+  add_box(pts, 0.0855, 0.0, 0.0, Eigen::Vector3d(0.07, 0.07, 0.18), 0.004);  // 5 mm gap
+  const auto boxes = fit_stacked_boxes(pts);
+  REQUIRE(boxes.size() == 2);
+  for (const auto& b : boxes) CHECK(b.pose.t.z() - 0.5 * b.size.z() == Approx(0.0).margin(0.003));
+  CHECK(boxes[1].size.z() == Approx(0.18).margin(0.004));
+  CHECK(boxes[0].size.z() == Approx(0.05).margin(0.004));
+}
+
+TEST_CASE("stack split: a single box, upright or tilted, stays one box", "[perception][stack]") {
+  Points upright;
+  add_box(upright, 0.0, 0.0, 0.5, Eigen::Vector3d(0.07, 0.09, 0.16), 0.004);
+  CHECK(fit_stacked_boxes(upright).size() == 1);
+  Points tilted;
+  add_box(tilted, 0.0, 0.0, 0.0, Eigen::Vector3d(0.25, 0.15, 0.05), 0.004);
+  const Eigen::Matrix3d r = Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  for (auto& p : tilted) p = r * p + Eigen::Vector3d(0, 0, 0.06);
+  CHECK(fit_stacked_boxes(tilted).size() == 1);
+}
