@@ -14,6 +14,7 @@
 #include "runtime/cli/interrupt.h"
 #include "runtime/cli/progress.h"
 #include "runtime/cli/run_outputs.h"
+#include "runtime/report/page.h"
 
 namespace ksmc::runtime::cli {
 
@@ -88,6 +89,16 @@ int usage_error(const CliStreams& io, const DomainSpec& spec, const std::string&
 int failure(const CliStreams& io, const DomainSpec& spec, const std::string& msg) {
   io.err << spec.name << ": error: " << msg << '\n';
   return kExitError;
+}
+
+// report.html (runtime/report) from what the folder holds; a report that cannot be drawn is
+// a warning, the run's results stand.
+void write_report(OutputDir& out, const nlohmann::json& summary, const DomainSpec& spec, const CliStreams& io) {
+  try {
+    out.write("report.html", report::report_html(out.dir(), summary));
+  } catch (const std::exception& e) {
+    io.err << spec.name << ": warning: report.html not written: " << e.what() << '\n';
+  }
 }
 
 }  // namespace
@@ -218,6 +229,8 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
     out->write("best_state.json", best_state_json(result).dump(2) + "\n");
     if (cfg.trace_every != 0) out->write("trace.csv", trace_csv(result));
     if (cfg.samples != 0) out->write("samples.jsonl", samples_jsonl(result));
+    info.outputs = out->written();
+    write_report(*out, make_summary(result, engine->schedule(), info), spec, io);
     info.outputs = out->written();
     out->write("summary.json", make_summary(result, engine->schedule(), info).dump(2) + "\n");
   } catch (const std::exception& e) {

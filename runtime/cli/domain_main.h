@@ -5,9 +5,9 @@
 //     --burn-in N --trace --trace-every K --quiet --help --version  + the domain's flags
 //
 // Writes into --out DIR (created if missing), every file atomically: the domain's own
-// results, best_state.json, trace.csv (--trace), samples.jsonl (--samples N > 0) and,
-// last, summary.json. Exit codes: 0 done, 1 error (bad input, cannot write; the message
-// names the file), 2 usage error, 130 interrupted by Ctrl-C (outputs still complete).
+// results, best_state.json, trace.csv (--trace), samples.jsonl (--samples N > 0),
+// report.html (runtime/report) and, last, summary.json. Exit codes: 0 done, 1 error (bad
+// input, cannot write; the message names the file), 2 usage error, 130 interrupted by Ctrl-C (outputs still complete).
 #pragma once
 
 #include <iostream>

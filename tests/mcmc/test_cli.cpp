@@ -150,7 +150,7 @@ TEST_CASE("cli: a full run writes complete outputs atomically and a correct summ
                      "--thin", "100", "--trace", "--trace-every", "1000", "--out", out.string()});
   INFO(r.err);
   REQUIRE(r.code == 0);
-  CHECK(files_in(out) == std::vector<std::string>{"best_state.json", "samples.jsonl", "summary.json",
+  CHECK(files_in(out) == std::vector<std::string>{"best_state.json", "report.html", "samples.jsonl", "summary.json",
                                                   "toy_result.json", "trace.csv"});  // no temporaries
   CHECK(r.err.find("it/s") != std::string::npos);  // plain progress lines when not a TTY
   CHECK(r.err.find('\r') == std::string::npos);
@@ -175,7 +175,7 @@ TEST_CASE("cli: a full run writes complete outputs atomically and a correct summ
   CHECK(s.at("inputs")[0].at("bytes") == input_text.size());
   CHECK(s.at("inputs")[0].at("fnv1a64") == fmt::format("{:016x}", cli::fnv1a64(input_text)));
   CHECK(s.at("outputs") ==
-        nlohmann::json::array({"toy_result.json", "best_state.json", "trace.csv", "samples.jsonl"}));
+        nlohmann::json::array({"toy_result.json", "best_state.json", "trace.csv", "samples.jsonl", "report.html"}));
   std::uint64_t selected = 0;
   std::vector<std::string> names;
   for (const auto& k : s.at("kernels")) {
@@ -245,6 +245,6 @@ TEST_CASE("cli: Ctrl-C stops the run, writes complete outputs, exit 130") {
   const auto s = nlohmann::json::parse(slurp(out / "summary.json"));
   CHECK(s.at("cancelled") == true);
   CHECK(s.at("iterations").get<std::uint64_t>() < 100000000);
-  CHECK(files_in(out) == std::vector<std::string>{"best_state.json", "samples.jsonl", "summary.json",
+  CHECK(files_in(out) == std::vector<std::string>{"best_state.json", "report.html", "samples.jsonl", "summary.json",
                                                   "toy_result.json", "trace.csv"});
 }

@@ -71,8 +71,8 @@ TEST_CASE("cli process: SIGINT from outside -> clean stop, complete outputs, exi
   std::vector<std::string> names;
   for (const auto& e : fs::directory_iterator(out)) names.push_back(e.path().filename().string());
   std::sort(names.begin(), names.end());
-  CHECK(names == std::vector<std::string>{"best_state.json", "samples.jsonl", "summary.json", "toy_result.json",
-                                          "trace.csv"});
+  CHECK(names == std::vector<std::string>{"best_state.json", "report.html", "samples.jsonl", "summary.json",
+                                          "toy_result.json", "trace.csv"});
   std::ifstream f(out / "summary.json");
   const auto summary = nlohmann::json::parse(f);
   CHECK(summary.at("cancelled") == true);
