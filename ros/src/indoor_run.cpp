@@ -1,0 +1,17 @@
+// The indoor domain's spec from its generated code and kit. The only place the indoor node
+// names the kit's spec function, whose signature changes with the declaration-driven
+// binding (docs/binding.md): kit::domain_spec(gen::domain_config(), gen::mln_binding())
+// becomes kit::domain_spec(gen::binding()).
+#include "indoor_model.h"
+#include "ros/src/run_spec.h"
+#include "stdlib/indoor/kit/kit.h"
+
+namespace ksmc::ros_nodes {
+
+RunOutcome run_indoor(const std::filesystem::path& input, const std::filesystem::path& out_dir, const RunSettings& settings) {
+  static const runtime::cli::DomainSpec spec =
+      stdlib::indoor::kit::domain_spec(ksmc_generated::indoor::domain_config(), ksmc_generated::indoor::mln_binding());
+  return run_spec(spec, input, out_dir, settings);
+}
+
+}  // namespace ksmc::ros_nodes
