@@ -54,13 +54,19 @@ def main():
     html = open(report, encoding="utf-8").read()
     check(not re.search(r"""(src|href)\s*=\s*["']?(https?:)?//""", html), "no network reference (http:// or //host) in the page")
 
-    rc, dom, log = chromium(binary, ["--dump-dom"], "file://" + report)
+    rc, dom, log = chromium(binary, ["--dump-dom"], "file://" + report + "#hover-selftest")
     check(rc == 0, "chromium --dump-dom exit code 0 (got %d)" % rc)
     status = re.search(r'<div id="report-status"[^>]*data-status="([a-z]+)"[^>]*>([^<]*)<', dom)
     check(status is not None and status.group(1) == "ok",
           "#report-status is 'ok' (no script error): " + (status.group(2) if status else "missing"))
     console_errors = [l for l in log.splitlines() if "CONSOLE" in l and re.search(r"Uncaught|Error|error", l)]
     check(not console_errors, "no console errors in chromium's log" + ("" if not console_errors else ": " + console_errors[0]))
+
+    hover = re.search(r'<div id="report-status"[^>]*data-hover="([^"]*)"', dom)
+    hover = hover.group(1) if hover else ""
+
+    def hover_shows(words):
+        check(all(w in hover for w in words), "hover on the first element shows " + ", ".join(words) + ": '" + hover + "'")
 
     def count(pattern):
         return len(re.findall(pattern, dom))
@@ -77,6 +83,7 @@ def main():
     if os.path.exists(os.path.join(d, "world.json")):
         w = json.load(open(os.path.join(d, "world.json")))
         has("indoor-map")
+        hover_shows(["unit ", "P(", "size (m)", "area (m2)"])
         n = count(r'<polygon id="unit-\d+" class="unit"')
         check(n == len(w["units"]), "indoor: %d unit outlines for %d units in world.json" % (n, len(w["units"])))
         n = count(r'<line id="door-\d+" class="door"')
@@ -89,6 +96,7 @@ def main():
         g = json.load(open(os.path.join(d, "scene_graph.json")))
         for id_ in ["tabletop-view", "scene-graph", "objects-table"]:
             has(id_)
+        hover_shows(["object ", "P(false)", "P(hidden)"])
         n = count(r'<g id="box-[^"]+" class="box"')
         check(n == len(g["objects"]), "tabletop: %d boxes drawn for %d objects" % (n, len(g["objects"])))
         n = count(r'<g id="graph-node-[^"]+" class="graph-node"')
@@ -99,6 +107,7 @@ def main():
         s = json.load(open(os.path.join(d, "segments.json")))
         for id_ in ["segments-view", "segments-table", "relations-table"]:
             has(id_)
+        hover_shows(["segment ", "length (m)", "support (points)"])
         n = count(r'<line id="segment-\d+" class="segment"')
         check(n == len(s["segments"]), "segments: %d segments drawn for %d in segments.json" % (n, len(s["segments"])))
 

@@ -9,6 +9,15 @@
     if (kinds[data.kind]) kinds[data.kind](data);
     K.drawSummary(data);
     K.drawTrace(data);
+    // report.html#hover-selftest: hover the first unit / box / segment and keep the tooltip's
+    // text in #report-status data-hover (the headless test cannot move a mouse).
+    if (location.hash === "#hover-selftest") {
+      var target = document.querySelector(".unit, .box, .segment");
+      if (target) {
+        target.dispatchEvent(new MouseEvent("mouseenter"));
+        status.setAttribute("data-hover", document.getElementById("tooltip").textContent);
+      }
+    }
     if (window.ksmcErrors.length === 0) {
       status.setAttribute("data-status", "ok");
       status.setAttribute("data-kind", data.kind);
