@@ -59,6 +59,7 @@ IndoorMessages indoor_messages(const std::filesystem::path& out_dir, const nav_m
   const MapFrame frame(map.info);
   IndoorMessages out;
   std_msgs::Header h = map.header;
+  if (h.frame_id.empty()) h.frame_id = "map";  // RViz drops markers without a frame
   const double line = frame.metres(2.0) > 0.05 ? frame.metres(2.0) : 0.05;
 
   visualization_msgs::Marker clear;
