@@ -19,6 +19,7 @@
 #include "runtime/cli/run_outputs.h"
 #include "runtime/domain/config_error.h"
 #include "runtime/io/atomic_file.h"
+#include "runtime/report/page.h"
 
 namespace ksmc::runtime::cli {
 
@@ -157,6 +158,16 @@ int failure_or_interrupted(const CliStreams& io, const DomainSpec& spec, const s
   io.err << spec.name << ": interrupted by " << InterruptGuard::signal_name()
          << " before a state existed; nothing written (any earlier outputs are untouched)\n";
   return InterruptGuard::exit_code();
+}
+
+// report.html (runtime/report) from what the folder holds; a report that cannot be drawn is
+// a warning, the run's results stand.
+void write_report(OutputDir& out, const nlohmann::json& summary, const DomainSpec& spec, const CliStreams& io) {
+  try {
+    out.write("report.html", report::report_html(out.dir(), summary));
+  } catch (const std::exception& e) {
+    io.err << spec.name << ": warning: report.html not written: " << e.what() << '\n';
+  }
 }
 
 }  // namespace
@@ -309,6 +320,7 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
     out->write("best_state.json", best_state_json(result).dump(2) + "\n");
     if (cfg.trace_every != 0) out->write("trace.csv", trace_csv(result));
     if (cfg.samples != 0) out->write("samples.jsonl", samples_jsonl(result));
+    write_report(*out, make_summary(result, engine->schedule(), info), spec, io);
     info.outputs = out->manifest();
     out->write("summary.json", make_summary(result, engine->schedule(), info).dump(2) + "\n");
     out->commit();  // the whole folder at once

@@ -5,8 +5,8 @@
 //     --burn-in N --trace --trace-every K --quiet --help --version  + the domain's flags
 //
 // Writes into --out DIR (created if missing), every file atomically: the domain's own
-// results, best_state.json, trace.csv (--trace), samples.jsonl (--samples N > 0) and,
-// last, summary.json. Exit codes: 0 done, 1 error (bad input, cannot write; the message
+// results, best_state.json, trace.csv (--trace), samples.jsonl (--samples N > 0),
+// report.html (runtime/report) and, last, summary.json. Exit codes: 0 done, 1 error (bad input, cannot write; the message
 // names the file), 2 usage error, 3 internal error (a runtime::domain::ConfigError: the kit
 // cannot run a configuration `ksmc check` accepted), 130 interrupted by Ctrl-C (outputs
 // still complete). `--evidence-out FILE` writes the best state's evidence as an Alchemy

@@ -11,7 +11,7 @@ set(expected
   lib/libksmc_stdlib_tabletop_kit.a lib/libksmc_stdlib_tabletop.a lib/libksmc_stdlib_tabletop_output.a
   lib/libksmc_stdlib_indoor_kit.a lib/libksmc_stdlib_indoor.a lib/libksmc_stdlib_indoor_io.a
   lib/libksmc_stdlib_indoor_detect.a
-  include/ksmc/runtime/ksmc_runtime.h include/ksmc/runtime/cli/domain_main.h include/ksmc/runtime/domain/config.h include/ksmc/runtime/mln/program.h
+  include/ksmc/runtime/ksmc_runtime.h include/ksmc/runtime/cli/domain_main.h include/ksmc/runtime/domain/binding.h include/ksmc/runtime/mln/program.h
   include/ksmc/runtime/mcmc/model.h include/ksmc/runtime/io/atomic_file.h
   include/ksmc/stdlib/tabletop/kit/kit.h include/ksmc/stdlib/indoor/kit/kit.h
   share/ksmc/stdlib/core.ksm share/ksmc/stdlib/tabletop.ksm share/ksmc/stdlib/indoor.ksm

@@ -185,7 +185,7 @@ TEST_CASE("cli: a full run writes complete outputs atomically and a correct summ
                      "--thin", "100", "--trace", "--trace-every", "1000", "--out", out.string()});
   INFO(r.err);
   REQUIRE(r.code == 0);
-  CHECK(files_in(out) == std::vector<std::string>{"best_state.json", "samples.jsonl", "summary.json",
+  CHECK(files_in(out) == std::vector<std::string>{"best_state.json", "report.html", "samples.jsonl", "summary.json",
                                                   "toy_result.json", "trace.csv"});  // no temporaries
   CHECK(r.err.find("it/s") != std::string::npos);  // plain progress lines when not a TTY
   CHECK(r.err.find('\r') == std::string::npos);
@@ -218,7 +218,7 @@ TEST_CASE("cli: a full run writes complete outputs atomically and a correct summ
     CHECK(f.at("bytes") == text.size());
     CHECK(f.at("sha256") == ksmc::runtime::io::sha256_hex(text));
   }
-  CHECK(listed == std::vector<std::string>{"best_state.json", "samples.jsonl", "toy_result.json", "trace.csv"});
+  CHECK(listed == std::vector<std::string>{"best_state.json", "report.html", "samples.jsonl", "toy_result.json", "trace.csv"});
   std::uint64_t selected = 0;
   std::vector<std::string> names;
   for (const auto& k : s.at("kernels")) {
@@ -295,6 +295,6 @@ TEST_CASE("cli: Ctrl-C stops the run, writes complete outputs, exit 130") {
   CHECK(s.at("cancelled") == true);
   CHECK(s.at("interrupted") == "SIGINT");
   CHECK(s.at("iterations").get<std::uint64_t>() < 100000000);
-  CHECK(files_in(out) == std::vector<std::string>{"best_state.json", "samples.jsonl", "summary.json",
+  CHECK(files_in(out) == std::vector<std::string>{"best_state.json", "report.html", "samples.jsonl", "summary.json",
                                                   "toy_result.json", "trace.csv"});
 }

@@ -99,14 +99,14 @@ bool staging_left(const fs::path& out) {
 }
 
 void check_complete(const fs::path& out, const std::string& signal) {
-  CHECK(names_in(out) == std::vector<std::string>{"best_state.json", "samples.jsonl", "summary.json",
+  CHECK(names_in(out) == std::vector<std::string>{"best_state.json", "report.html", "samples.jsonl", "summary.json",
                                                   "toy_result.json", "trace.csv"});
   const auto summary = nlohmann::json::parse(slurp(out / "summary.json"));
   CHECK(summary.at("cancelled") == true);
   CHECK(summary.at("interrupted") == signal);
   CHECK(summary.at("iterations").get<std::uint64_t>() > 0);
   CHECK(summary.at("chain_results").size() == 2);
-  CHECK(summary.at("outputs").size() == 4);
+  CHECK(summary.at("outputs").size() == 5);
 }
 
 }  // namespace
