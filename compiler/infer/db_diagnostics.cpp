@@ -80,8 +80,9 @@ std::vector<std::string> parse_db_all(const std::string& text, const std::string
                                       const mln::Domain& domain, mln::Evidence& evidence,
                                       const mln::DbOptions& options) {
   std::vector<std::string> errors;
-  // An empty domain is a whole-file error: report it once.
+  // Whole-file errors (NUL bytes, an empty domain): report them once.
   try {
+    mln::check_db_text(text, path);
     mln::parse_db("", path, program, domain, evidence, options);
   } catch (const mln::MlnError& e) {
     return {e.what()};

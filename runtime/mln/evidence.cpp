@@ -101,15 +101,23 @@ bool parse_line(std::string_view line, const std::string& where, ParsedAtom& out
   return true;
 }
 
-// Calls fn(where, atom, predicate) for every atom line, after the checks every pass shares.
-template <typename Fn>
-void for_each_atom(std::string_view text, const std::string& filename, const Program& program, Fn&& fn) {
-  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // UTF-8 byte order mark
+}  // namespace
+
+void check_db_text(std::string_view text, const std::string& filename) {
   if (const auto nul = text.find('\0'); nul != std::string_view::npos) {
     const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(nul), '\n');
     throw MlnError(filename + ":" + std::to_string(line) + ": NUL byte at offset " + std::to_string(nul) +
                    " (a binary file, or UTF-16? evidence must be UTF-8 text)");
   }
+}
+
+namespace {
+
+// Calls fn(where, atom, predicate) for every atom line, after the checks every pass shares.
+template <typename Fn>
+void for_each_atom(std::string_view text, const std::string& filename, const Program& program, Fn&& fn) {
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // UTF-8 byte order mark
+  check_db_text(text, filename);
   std::int32_t line_no = 0;
   std::size_t pos = 0;
   ParsedAtom atom;

@@ -56,6 +56,9 @@ void parse_db(std::string_view text, const std::string& filename, const Program&
 // from the evidence); checks syntax, predicate names and arities on the way.
 void collect_db_constants(std::string_view text, const std::string& filename, const Program& program,
                           Domain& domain);
+// Whole-file checks of `.db` text that no single line can make (NUL bytes: a binary or
+// UTF-16 file); an MlnError "file:line: ..." otherwise nothing.
+void check_db_text(std::string_view text, const std::string& filename);
 // Reads a whole file; a missing file is an MlnError naming it.
 std::string read_text_file(const std::string& path);
 // Reads the file and calls parse_db; a missing file is an MlnError naming it.

@@ -69,6 +69,7 @@ TEST_CASE("the Office domain runs end to end: world.json reports Office units", 
   const auto out = ti::temp_dir("office_out");
   ksmc::runtime::cli::OutputDir dir(out);
   setup.write_results(run, *best, dir);
+  dir.commit();
   const auto world = nlohmann::json::parse(std::ifstream(out / "world.json"));
   CHECK(world.at("types").size() == 5);
   int offices = 0;

@@ -257,7 +257,7 @@ TEST_CASE("cli: a full run writes complete outputs atomically and a correct summ
   // A second run into the same folder with other flags leaves no file of the first.
   const Run again = run({in.string(), "--iterations", "100", "--out", out.string(), "--quiet"});
   REQUIRE(again.code == 0);
-  CHECK(files_in(out) == std::vector<std::string>{"best_state.json", "summary.json", "toy_result.json"});
+  CHECK(files_in(out) == std::vector<std::string>{"best_state.json", "report.html", "summary.json", "toy_result.json"});
   CHECK(files_in(out.parent_path()) == std::vector<std::string>{"nested"});  // no staging folder left
 }
 

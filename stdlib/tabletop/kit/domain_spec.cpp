@@ -62,8 +62,9 @@ void check_binding(const blocks::Binding& b) {
   for (const auto& k : b.kernels) RefineKernel check(k, true);  // throws for what it cannot run
 }
 
-// --cloud: the point-cloud front end (docs/perception.md); the boxes go to OUT/scene.json.
-Scene load_cloud_input(const cli::DomainInput& in) {
+// --cloud: the point-cloud front end (docs/perception.md). The boxes it found are written
+// with the run's other outputs as OUT/scene.json (`scene_json`).
+Scene load_cloud_input(const cli::DomainInput& in, std::string& scene_json) {
 #ifdef KSMC_HAVE_PERCEPTION
   perception::CloudOptions options;
   try {
@@ -72,10 +73,11 @@ Scene load_cloud_input(const cli::DomainInput& in) {
     throw cli::UsageError(std::string("--cloud-units: ") + e.what());
   }
   perception::CloudScene cs = perception::scene_from_cloud(in.flags.text("cloud"), options);
-  cli::OutputDir(in.out_dir).write("scene.json", perception::scene_json_text(cs.scene));
+  scene_json = perception::scene_json_text(cs.scene);
   return std::move(cs.scene);
 #else
   (void)in;
+  (void)scene_json;
   throw cli::UsageError("--cloud: this tabletop was built without PCL");
 #endif
 }
@@ -187,12 +189,20 @@ cli::DomainSpec domain_spec(const blocks::Binding& binding) {
     const bool cloud = in.flags.given("cloud");
     if (in.inputs.size() != (cloud ? 0u : 1u))
       throw cli::UsageError(cloud ? "--cloud replaces the scene.json input" : "expected one scene.json input");
+    std::string scene_json;
     auto scene = std::make_shared<const Scene>(
-        cloud ? load_cloud_input(in) : load_input(in.inputs.at(0), in.flags.text("input-format"), warnings));
+        cloud ? load_cloud_input(in, scene_json) : load_input(in.inputs.at(0), in.flags.text("input-format"), warnings));
     for (const auto& w : warnings) std::cerr << "tabletop: warning: " << w << "\n";
     KitSetup k = make_setup(*b, scene);
     if (!scene->image.empty()) k.setup.extra_inputs.push_back(scene->image);
-    if (cloud) k.setup.extra_inputs.push_back(in.flags.text("cloud"));
+    if (cloud) {
+      k.setup.extra_inputs.push_back(in.flags.text("cloud"));
+      k.setup.write_results = [write = std::move(k.setup.write_results), scene_json](
+                                  const rm::RunResult& run, rm::Model& best, cli::OutputDir& out) {
+        out.write("scene.json", scene_json);
+        write(run, best, out);
+      };
+    }
     return std::move(k.setup);
   };
   return spec;
