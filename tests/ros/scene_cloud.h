@@ -8,8 +8,11 @@
 
 namespace ksmc_ros_test {
 
-inline constexpr int kSceneCloudBoxes = 2;
+struct SceneCloud {
+  std::vector<std::array<float, 3>> points;      // sensor frame, metres
+  std::vector<std::array<double, 3>> box_sizes;  // the boxes' true sizes (x, y, z), metres
+};
 
-std::vector<std::array<float, 3>> table_with_two_boxes();
+SceneCloud table_with_two_boxes();
 
 }  // namespace ksmc_ros_test

@@ -5,12 +5,16 @@
 // PointCloud2 (a table and two boxes, some NaN points) on /points and checks the second run
 // (OUT_ROOT/scene_2): two objects on the table, one box marker each in the cloud's frame.
 // One PASS / FAIL line per assertion.
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <limits>
 #include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 #include <ros/ros.h>
@@ -33,11 +37,26 @@ nlohmann::json read_json(const std::string& path) {
   return in ? nlohmann::json::parse(in) : nlohmann::json();
 }
 
+// Each true box has a found box whose sides (sorted) are within 1 cm of its own.
+bool sizes_found(const std::vector<std::array<double, 3>>& truth, const nlohmann::json& objects) {
+  for (auto t : truth) {
+    std::sort(t.begin(), t.end());
+    bool found = false;
+    for (const auto& o : objects) {
+      std::array<double, 3> s = {o["size"][0], o["size"][1], o["size"][2]};
+      std::sort(s.begin(), s.end());
+      found = found || (std::abs(s[0] - t[0]) < 0.01 && std::abs(s[1] - t[1]) < 0.01 && std::abs(s[2] - t[2]) < 0.01);
+    }
+    if (!found) return false;
+  }
+  return true;
+}
+
 // The cloud case: the node's second run (OUT_ROOT/scene_2) on the synthetic cloud.
 void check_cloud_run(const std::string& graph_text, const visualization_msgs::MarkerArray& markers,
-                     const std::string& out_root, const std::string& frame) {
+                     const std::string& out_root, const std::string& frame, const std::vector<std::array<double, 3>>& truth) {
   const auto g = nlohmann::json::parse(graph_text);
-  const std::size_t n = g["objects"].size(), want = ksmc_ros_test::kSceneCloudBoxes;
+  const std::size_t n = g["objects"].size(), want = truth.size();
   check(n == want, "cloud: scene_graph: " + std::to_string(n) + " objects (" + std::to_string(want) + " boxes in the cloud)");
   std::size_t on_table = 0, flagged = 0;
   for (const auto& s : g["support"]) on_table += s[1] == "table" ? 1 : 0;
@@ -49,6 +68,7 @@ void check_cloud_run(const std::string& graph_text, const visualization_msgs::Ma
   check(read_json(out_root + "/scene_2/scene_graph.json") == g, "cloud: the published scene graph is the node's scene_graph.json");
   const auto scene = read_json(out_root + "/scene_2/scene.json");  // the boxes the front end found
   check(scene.is_object() && scene["objects"].size() == n, "cloud: the run's scene.json holds the " + std::to_string(n) + " boxes found");
+  check(scene.is_object() && sizes_found(truth, scene["objects"]), "cloud: every box of the cloud found with its sides within 1 cm");
   check(markers.markers.size() == 1 + n, "cloud: markers: " + std::to_string(markers.markers.size()) + " = 1 DELETEALL + " +
                                              std::to_string(n) + " boxes");
   bool boxes = markers.markers.size() == 1 + n && scene.is_object();
@@ -65,7 +85,8 @@ void check_cloud_run(const std::string& graph_text, const visualization_msgs::Ma
 // /points and checks the node's second run.
 void cloud_case(ros::NodeHandle& nh, std::optional<std::string>& graph, std::optional<visualization_msgs::MarkerArray>& markers,
                 const std::string& out_root, double timeout) {
-  auto points = ksmc_ros_test::table_with_two_boxes();
+  const auto synthetic = ksmc_ros_test::table_with_two_boxes();
+  auto points = synthetic.points;
   const std::size_t finite = points.size();
   const float nan = std::numeric_limits<float>::quiet_NaN();
   for (std::size_t i = 0; i < 5; ++i) points.insert(points.begin() + static_cast<long>(i * 500), {nan, 0.1F, nan});
@@ -77,7 +98,7 @@ void cloud_case(ros::NodeHandle& nh, std::optional<std::string>& graph, std::opt
   std::cout << "published a PointCloud2 of " << points.size() << " points (" << finite << " finite) on /points" << std::endl;
   ksmc_ros_test::spin_until([&] { return graph && markers; }, timeout);
   check(graph && markers, "cloud: scene_graph and markers received");
-  if (graph && markers) check_cloud_run(*graph, *markers, out_root, frame);
+  if (graph && markers) check_cloud_run(*graph, *markers, out_root, frame, synthetic.box_sizes);
 }
 
 }  // namespace
