@@ -12,7 +12,7 @@ PACKAGES=(
   libbullet-dev graphviz
   clang libclang-rt-14-dev
   chromium
-  ros-core libroscpp-dev libnav-msgs-dev libvisualization-msgs-dev libstd-msgs-dev librosbag-dev
+  ros-core libroscpp-dev libnav-msgs-dev libvisualization-msgs-dev libstd-msgs-dev libsensor-msgs-dev librosbag-dev
 )
 missing=()
 for p in "${PACKAGES[@]}"; do

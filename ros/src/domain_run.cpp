@@ -10,11 +10,14 @@ static_assert(ksmc::ros_nodes::kExitInterrupted == ksmc::runtime::cli::kExitInte
 
 namespace ksmc::ros_nodes {
 
-RunOutcome run_spec(const runtime::cli::DomainSpec& spec, const std::filesystem::path& input,
-                      const std::filesystem::path& out_dir, const RunSettings& s) {
-  std::vector<std::string> args = {spec.name,   input.string(), "--out",    out_dir.string(), "--seed",
-                                   std::to_string(s.seed), "--iterations", std::to_string(s.iterations),
-                                   "--chains",  std::to_string(s.chains), "--quiet"};
+RunOutcome run_spec(const runtime::cli::DomainSpec& spec, const std::vector<std::string>& inputs,
+                    const std::filesystem::path& out_dir, const RunSettings& s) {
+  std::vector<std::string> args = {spec.name};
+  args.insert(args.end(), inputs.begin(), inputs.end());
+  for (const std::string& a : {std::string("--out"), out_dir.string(), std::string("--seed"), std::to_string(s.seed),
+                               std::string("--iterations"), std::to_string(s.iterations), std::string("--chains"),
+                               std::to_string(s.chains), std::string("--quiet")})
+    args.push_back(a);
   args.insert(args.end(), s.extra_args.begin(), s.extra_args.end());
   std::vector<const char*> argv;
   for (const auto& a : args) argv.push_back(a.c_str());

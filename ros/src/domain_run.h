@@ -27,6 +27,10 @@ struct RunOutcome {
 // indoor_run.cpp / tabletop_run.cpp: the domains built from domains/<domain>.ksm.
 RunOutcome run_indoor(const std::filesystem::path& input, const std::filesystem::path& out_dir, const RunSettings& settings);
 RunOutcome run_tabletop(const std::filesystem::path& input, const std::filesystem::path& out_dir, const RunSettings& settings);
+// `tabletop --cloud CLOUD --cloud-units UNITS` (docs/perception.md): the point-cloud front end
+// finds the table and boxes (written to OUT/scene.json), then the same inference runs.
+RunOutcome run_tabletop_cloud(const std::filesystem::path& cloud, const std::string& units,
+                              const std::filesystem::path& out_dir, const RunSettings& settings);
 
 // "--a 1 --b" -> {"--a", "1", "--b"} (the ~extra_args parameter).
 std::vector<std::string> split_args(const std::string& text);

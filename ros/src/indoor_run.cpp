@@ -9,7 +9,7 @@ namespace ksmc::ros_nodes {
 RunOutcome run_indoor(const std::filesystem::path& input, const std::filesystem::path& out_dir, const RunSettings& settings) {
   static const runtime::cli::DomainSpec spec =
       stdlib::indoor::kit::domain_spec(ksmc_generated::indoor::binding());
-  return run_spec(spec, input, out_dir, settings);
+  return run_spec(spec, {input.string()}, out_dir, settings);
 }
 
 }  // namespace ksmc::ros_nodes

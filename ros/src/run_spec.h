@@ -1,4 +1,5 @@
-// run_domain_main on one input with a node's settings (C++20 side of domain_run.h).
+// run_domain_main with a node's settings (C++20 side of domain_run.h). `inputs` are the
+// arguments before --out: the positional input, or flags that replace it (--cloud ...).
 #pragma once
 
 #include "ros/src/domain_run.h"
@@ -6,7 +7,7 @@
 
 namespace ksmc::ros_nodes {
 
-RunOutcome run_spec(const runtime::cli::DomainSpec& spec, const std::filesystem::path& input,
+RunOutcome run_spec(const runtime::cli::DomainSpec& spec, const std::vector<std::string>& inputs,
                     const std::filesystem::path& out_dir, const RunSettings& settings);
 
 }  // namespace ksmc::ros_nodes

@@ -1,24 +1,33 @@
-// ksmc_tabletop_node: runs the table-top domain on each scene (until the point-cloud front
-// end exists, a scene is the JSON of examples/tabletop/*.json on a std_msgs/String topic).
+// ksmc_tabletop_node: runs the table-top domain on each scene: a point cloud (through the
+// point-cloud front end, as `tabletop --cloud`) or a scene JSON of examples/tabletop/*.json.
 //
-// Subscribes  ~scene (std_msgs/String, scene JSON; an "image" path in it must be absolute)
+// Subscribes  ~cloud_topic (default /points, sensor_msgs/PointCloud2, float32 x y z; points
+//             with a NaN coordinate are skipped), written as a PCD and run with --cloud
+//             --cloud-units ~cloud_units (default m); the boxes are in the cloud's frame
+//             ~scene (std_msgs/String, scene JSON; an "image" path in it must be absolute)
 // Publishes   (latched, private)
 //   ~scene_graph  std_msgs/String: scene_graph.json (objects with P(false) / P(hidden),
 //                 support and contact edges)
-//   ~markers      visualization_msgs/MarkerArray: one box per object in ~frame_id (camera
-//                 frame), red = false estimate, orange = hidden supporter, green = fine
+//   ~markers      visualization_msgs/MarkerArray: one box per object (in the cloud's frame,
+//                 for a scene JSON in ~frame_id, the camera frame), red = false estimate,
+//                 orange = hidden supporter, green = fine
 // Parameters (private): ~iterations (2000), ~seed (1), ~chains (1), ~extra_args (""),
-//   ~frame_id ("camera"), ~output_root ("" = temp folder per scene, removed; else kept).
+//   ~frame_id ("camera"), ~cloud_topic ("/points"), ~cloud_units ("m"),
+//   ~output_root ("" = temp folder per scene, removed; else kept).
+// Inputs that arrive during a run are not queued: the newest (cloud or scene) runs next.
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <optional>
+#include <variant>
 
 #include <nlohmann/json.hpp>
 #include <ros/ros.h>
+#include <sensor_msgs/PointCloud2.h>
 #include <std_msgs/String.h>
 #include <visualization_msgs/MarkerArray.h>
 
+#include "ros/io/cloud_files.h"
 #include "ros/src/domain_run.h"
 #include "ros/src/node_params.h"
 
@@ -66,6 +75,54 @@ visualization_msgs::MarkerArray boxes(const nlohmann::json& scene, const nlohman
   return out;
 }
 
+// One input: a scene JSON text or a point cloud.
+using Input = std::variant<std::string, sensor_msgs::PointCloud2::ConstPtr>;
+
+struct Settings {
+  rn::RunSettings run;
+  std::string frame, cloud_units;
+};
+
+// One run's result: the scene that was run (for the box sizes; a cloud run writes the boxes
+// it found to OUT/scene.json) and the frame the boxes are in.
+struct Ran {
+  int exit_code = 0;
+  nlohmann::json scene;
+  std::string frame;
+};
+
+nlohmann::json read_json(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path.string() + ": missing after the run");
+  return nlohmann::json::parse(in);
+}
+
+// Runs one input in `work` into `out`. Throws std::runtime_error on a bad input or a
+// failed run (exit 130, interrupted, is returned).
+Ran run_input(const Input& input, const Settings& s, const std::filesystem::path& work, const std::filesystem::path& out) {
+  Ran ran;
+  rn::RunOutcome r;
+  if (const auto* text = std::get_if<std::string>(&input)) {
+    ran.scene = nlohmann::json::parse(*text);
+    ran.frame = s.frame;
+    std::ofstream(work / "scene.json") << *text;
+    r = rn::run_tabletop(work / "scene.json", out, s.run);
+  } else {
+    const auto& cloud = *std::get<sensor_msgs::PointCloud2::ConstPtr>(input);
+    const auto points = ksmc::ros_io::cloud_points(cloud);
+    ksmc::ros_io::write_pcd(work / "cloud.pcd", points);
+    ROS_INFO("ksmc: cloud %ux%u in '%s': %zu finite points", cloud.width, cloud.height, cloud.header.frame_id.c_str(),
+             points.size());
+    ran.frame = cloud.header.frame_id.empty() ? s.frame : cloud.header.frame_id;
+    r = rn::run_tabletop_cloud(work / "cloud.pcd", s.cloud_units, out, s.run);
+  }
+  ran.exit_code = r.exit_code;
+  if (r.exit_code == rn::kExitInterrupted) return ran;
+  if (r.exit_code != 0) throw std::runtime_error("table-top run failed (exit " + std::to_string(r.exit_code) + "): " + r.messages);
+  if (ran.scene.is_null()) ran.scene = read_json(out / "scene.json");
+  return ran;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -73,41 +130,40 @@ int main(int argc, char** argv) {
   ros::NodeHandle pnh("~");
   rn::NodeParams params;
   if (!rn::read_node_params(pnh, 2000, params)) return 2;
-  const rn::RunSettings& run = params.run;
+  Settings settings{params.run, "", ""};
   const std::string& output_root = params.output_root;
-  std::string frame;
-  pnh.param("frame_id", frame, std::string("camera"));
+  std::string cloud_topic;
+  pnh.param("frame_id", settings.frame, std::string("camera"));
+  pnh.param("cloud_topic", cloud_topic, std::string("/points"));
+  pnh.param("cloud_units", settings.cloud_units, std::string("m"));
   ros::Publisher graph_pub = pnh.advertise<std_msgs::String>("scene_graph", 1, true);
   ros::Publisher marker_pub = pnh.advertise<visualization_msgs::MarkerArray>("markers", 1, true);
-  std::optional<std::string> pending;
-  const ros::Subscriber sub =
+  std::optional<Input> pending;
+  const ros::Subscriber scene_sub =
       pnh.subscribe<std_msgs::String>("scene", 1, [&pending](const std_msgs::String::ConstPtr& m) { pending = m->data; });
-  ROS_INFO("ksmc_tabletop_node: waiting for %s", sub.getTopic().c_str());
+  const ros::Subscriber cloud_sub = pnh.subscribe<sensor_msgs::PointCloud2>(
+      cloud_topic, 1, [&pending](const sensor_msgs::PointCloud2::ConstPtr& m) { pending = m; });
+  ROS_INFO("ksmc_tabletop_node: waiting for %s and %s", cloud_sub.getTopic().c_str(), scene_sub.getTopic().c_str());
   unsigned count = 0;
   ros::Rate idle(20);
   while (ros::ok()) {
     ros::spinOnce();
     if (pending) {
-      const std::string text = std::move(*pending);
+      const Input input = std::move(*pending);
       pending.reset();
       ++count;
       const auto work = rn::fresh_folder("ksmc-tabletop-node");
       const auto out = output_root.empty() ? work / "out" : std::filesystem::path(output_root) / ("scene_" + std::to_string(count));
       try {
-        const nlohmann::json scene = nlohmann::json::parse(text);
-        std::ofstream(work / "scene.json") << text;
-        const rn::RunOutcome r = rn::run_tabletop(work / "scene.json", out, run);
-        if (r.exit_code == rn::kExitInterrupted) {
+        const Ran ran = run_input(input, settings, work, out);
+        if (ran.exit_code == rn::kExitInterrupted) {
           ros::shutdown();
-        } else if (r.exit_code != 0) {
-          ROS_ERROR("ksmc: table-top run failed (exit %d): %s", r.exit_code, r.messages.c_str());
         } else {
-          std::ifstream in(out / "scene_graph.json");
-          const nlohmann::json graph = nlohmann::json::parse(in);
+          const nlohmann::json graph = read_json(out / "scene_graph.json");
           std_msgs::String msg;
           msg.data = graph.dump();
           graph_pub.publish(msg);
-          marker_pub.publish(boxes(scene, graph, frame));
+          marker_pub.publish(boxes(ran.scene, graph, ran.frame));
           ROS_INFO("ksmc: scene %u: %zu objects, %zu support edges published", count, graph.at("objects").size(),
                    graph.at("support").size());
         }
@@ -121,3 +177,4 @@ int main(int argc, char** argv) {
   }
   return 0;
 }
+

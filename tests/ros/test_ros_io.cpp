@@ -1,10 +1,15 @@
-// ros/io: OccupancyGrid <-> PGM + YAML (rows flipped, trinary values, origin kept) and
-// the last /map of a bag written here.
+// ros/io: OccupancyGrid <-> PGM + YAML (rows flipped, trinary values, origin kept), the
+// last /map of a bag written here, PointCloud2 -> PCD (NaN points skipped).
+#include <algorithm>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <limits>
 
 #include <catch2/catch.hpp>
 
 #include "ros/io/bag_map.h"
+#include "ros/io/cloud_files.h"
 #include "ros/io/grid_files.h"
 
 namespace ri = ksmc::ros_io;
@@ -59,4 +64,53 @@ TEST_CASE("the last /map of a bag is read back", "[ros]") {
   CHECK_THROWS_WITH(ri::read_last_map(bag, "/other"), Catch::Contains("no nav_msgs/OccupancyGrid on /other"));
   CHECK_THROWS_WITH(ri::read_last_map(fs::temp_directory_path() / "ksmc_missing.bag"), Catch::Contains("ksmc_missing.bag"));
   fs::remove(bag);
+}
+
+TEST_CASE("a PointCloud2 becomes a binary PCD of its finite x y z", "[ros][cloud]") {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  auto cloud = ri::xyz_cloud({{1.0F, 2.0F, 3.0F}, {nan, 0.0F, 0.0F}, {-0.5F, 0.25F, 4.0F}, {0.0F, 0.0F, nan}}, "cam");
+  CHECK(cloud.header.frame_id == "cam");
+  CHECK_FALSE(cloud.is_dense);
+  // As an organized 2 x 2 cloud with padded rows: row order kept, NaN points skipped.
+  cloud.height = 2;
+  cloud.width = 2;
+  cloud.row_step = 40;
+  std::vector<std::uint8_t> padded(80, 0);
+  for (int row = 0; row < 2; ++row)
+    std::copy_n(cloud.data.begin() + row * 32, 32, padded.begin() + row * 40);
+  cloud.data = padded;
+  const auto points = ri::cloud_points(cloud);
+  REQUIRE(points.size() == 2);
+  CHECK(points[1] == std::array<float, 3>{-0.5F, 0.25F, 4.0F});
+
+  const fs::path pcd = fs::temp_directory_path() / "ksmc_test_ros_io.pcd";
+  ri::write_pcd(pcd, points);
+  std::ifstream in(pcd, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto data = text.find("DATA binary\n");
+  REQUIRE(data != std::string::npos);
+  CHECK(text.find("FIELDS x y z\n") != std::string::npos);
+  CHECK(text.find("POINTS 2\n") != std::string::npos);
+  REQUIRE(text.size() == data + 12 + 24);
+  float first[3];
+  std::memcpy(first, text.data() + data + 12, sizeof first);
+  CHECK((first[0] == 1.0F && first[1] == 2.0F && first[2] == 3.0F));
+  fs::remove(pcd);
+  CHECK_THROWS_WITH(ri::write_pcd(pcd, {}), Catch::Contains("ksmc_test_ros_io.pcd: no finite point"));
+}
+
+TEST_CASE("cloud_points rejects clouds without float x y z or with short data", "[ros][cloud]") {
+  auto cloud = ri::xyz_cloud({{1.0F, 2.0F, 3.0F}}, "cam");
+  auto no_z = cloud;
+  no_z.fields.pop_back();
+  CHECK_THROWS_WITH(ri::cloud_points(no_z), Catch::Contains("no field 'z' (fields: x, y)"));
+  auto as_double = cloud;
+  as_double.fields[0].datatype = sensor_msgs::PointField::FLOAT64;
+  CHECK_THROWS_WITH(ri::cloud_points(as_double), Catch::Contains("field 'x' is not FLOAT32"));
+  auto shorter = cloud;
+  shorter.data.resize(8);
+  CHECK_THROWS_WITH(ri::cloud_points(shorter), Catch::Contains("data holds 8 bytes"));
+  auto big = cloud;
+  big.is_bigendian = true;
+  CHECK_THROWS_WITH(ri::cloud_points(big), Catch::Contains("big-endian"));
 }
