@@ -1,5 +1,6 @@
 #include "runtime/cli/domain_main.h"
 
+#include <algorithm>
 #include <exception>
 #include <filesystem>
 #include <map>
@@ -14,6 +15,7 @@
 
 #include "runtime/cli/checked_flags.h"
 #include "runtime/cli/file_hash.h"
+#include "runtime/cli/input_adapter.h"
 #include "runtime/cli/interrupt.h"
 #include "runtime/cli/progress.h"
 #include "runtime/cli/run_outputs.h"
@@ -182,6 +184,7 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
   cf.iterations = std::to_string(spec.default_iterations);
   cf.out = spec.name + "_out";
   DomainFlagStorage dst;
+  std::vector<std::string> adapter_values(input_adapters().size());  // "" = flag not given
 
   CLI::App app(spec.description, spec.name);
   try {
@@ -203,6 +206,10 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
                    "write the best state's evidence as an Alchemy .db (replay with ksmc infer --evidence)")
         ->type_name("FILE");
     add_domain_flags(app, spec, dst);
+    for (std::size_t i = 0; i < input_adapters().size(); ++i) {
+      const InputAdapter& a = input_adapters()[i];
+      app.add_option("--" + a.flag, adapter_values[i], a.help)->type_name(a.value_name);
+    }
   } catch (const CLI::Error& e) {
     return failure(io, spec, fmt::format("bad flag table of domain '{}': {}", spec.name, e.what()));
   }
@@ -211,11 +218,14 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
   Counts counts;
   try {
     app.parse(argc, argv);
-    if (cf.inputs.size() < spec.min_inputs || cf.inputs.size() > spec.max_inputs) {
+    // An input adapter's flag (e.g. --bag) stands for one positional input.
+    const std::size_t given = cf.inputs.size() + static_cast<std::size_t>(std::count_if(
+                                  adapter_values.begin(), adapter_values.end(), [](const std::string& v) { return !v.empty(); }));
+    if (given < spec.min_inputs || given > spec.max_inputs) {
       throw UsageError(spec.min_inputs == spec.max_inputs
-                           ? fmt::format("expected {} {}, got {}", spec.min_inputs, spec.inputs_help, cf.inputs.size())
+                           ? fmt::format("expected {} {}, got {}", spec.min_inputs, spec.inputs_help, given)
                            : fmt::format("expected {} to {} {}, got {}", spec.min_inputs, spec.max_inputs,
-                                         spec.inputs_help, cf.inputs.size()));
+                                         spec.inputs_help, given));
     }
     counts = check_counts(cf);
     domain_flags = collect_domain_flags(spec, dst);
@@ -232,6 +242,29 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
     return usage_error(io, spec, e.what());
   } catch (const UsageError& e) {
     return usage_error(io, spec, e.what());
+  }
+
+  // Input adapters write their input into scratch folders, removed when the run ends.
+  std::vector<std::filesystem::path> scratch;
+  struct ScratchGuard {
+    std::vector<std::filesystem::path>& dirs;
+    ~ScratchGuard() {
+      std::error_code ec;
+      for (const auto& d : dirs) std::filesystem::remove_all(d, ec);
+    }
+  } scratch_guard{scratch};
+  try {
+    for (std::size_t i = 0; i < adapter_values.size(); ++i) {
+      if (adapter_values[i].empty()) continue;
+      const auto dir = std::filesystem::temp_directory_path() /
+                       fmt::format("ksmc-{}-{}-{}", input_adapters()[i].flag, ::getpid(), scratch.size());
+      std::filesystem::remove_all(dir);
+      std::filesystem::create_directories(dir);
+      scratch.push_back(dir);
+      cf.inputs.push_back(input_adapters()[i].to_input(adapter_values[i], dir).string());
+    }
+  } catch (const std::exception& e) {
+    return failure(io, spec, e.what());
   }
 
   DomainInput input;
