@@ -80,6 +80,7 @@ class ParamChecker {
       if (b.value == nullptr) continue;
       if (b.value->kind == ast::Expr::Kind::Call) call(*b.value->call);
       if (!b.defaulted) value(*b.param, *b.value, "parameter '" + b.param->name.name + "' of '" + c.name + "'");
+      if (it->second.decl->kind.name == "output") per_constant(*b.param, *b.value, c.name);
     }
   }
 
@@ -178,6 +179,22 @@ class ParamChecker {
           << ", not " << fmt::print_number(*p.rowsum) << " (rowsum " << fmt::print_number(*p.rowsum) << ")";
       ctx_.diags.error(rows[i]->loc, msg.str());
     }
+  }
+
+  // An output reports a value per constant of the kit's constant type: a predicate it names
+  // (`false_est: query`) must be unary over that type.
+  void per_constant(const ast::Param& p, const ast::Expr& e, const std::string& block) {
+    const std::string& t = p.type.name;
+    if (p.type.is_set || p.type.list_depth != 0 || (t != "query" && t != "evidence" && t != "pred")) return;
+    if (e.kind != ast::Expr::Kind::Name) return;
+    const PredicateSym* pred = s_.predicate(e.text);
+    if (pred == nullptr) return;  // the calls pass reported it
+    const auto& args = pred->decl->args;
+    if (args.size() == 1 && (constant_type_.empty() || args[0].type.name == constant_type_)) return;
+    ctx_.diags.error(e.loc, "parameter '" + p.name.name + "' of '" + block + "' reports one value per " +
+                                (constant_type_.empty() ? std::string("constant") : "'" + constant_type_ + "'") + ": '" +
+                                e.text + "' must be a unary predicate over " +
+                                (constant_type_.empty() ? std::string("the kit's constant type") : "'" + constant_type_ + "'"));
   }
 
   void labels(const ast::Param& p, const ast::Expr& e, const std::string& what) {

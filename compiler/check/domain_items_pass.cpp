@@ -1,12 +1,16 @@
 // The sampler items of a domain fit the kit: exactly one likelihood (when the domain has a
 // model), `prior for ...:` terms are per-binding priors (`-> real`), plain `prior` items are
-// global terms (no result).
+// global terms (no result), and each output block is used at most once.
+#include <map>
+#include <string>
+
 #include "compiler/check/passes.h"
 
 namespace ksmc::compiler::check {
 
 void DomainItemsPass::run(Context& ctx) {
   const ast::Loc* first_likelihood = nullptr;
+  std::map<std::string, const ast::Loc*> outputs;  // output block -> its first use
   const ast::Loc* model = nullptr;
   for (const ast::Item& item : ctx.main().items) {
     if (std::holds_alternative<ast::ModelDecl>(item.node) && model == nullptr) model = &item.loc;
@@ -16,6 +20,10 @@ void DomainItemsPass::run(Context& ctx) {
       } else {
         first_likelihood = &item.loc;
       }
+    }
+    if (const auto* o = std::get_if<ast::OutputDecl>(&item.node)) {
+      const auto [at, first] = outputs.emplace(o->call.name, &o->call.loc);
+      if (!first) ctx.diags.error(o->call.loc, "'" + o->call.name + "' is already an output of this domain (at " + ctx.where(*at->second) + "); the kit reports each output once");
     }
     const auto* p = std::get_if<ast::PriorDecl>(&item.node);
     if (p == nullptr) continue;
