@@ -296,6 +296,9 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
   } catch (const std::exception& e) {
     return failure_or_interrupted(io, spec, e);
   }
+  // The run has stopped: writing the outputs (which may run inference again) is not
+  // cancelled by the request that stopped it, nor by further signals.
+  const io::CancelShield shield;
   const bool interrupted = result.cancelled || InterruptGuard::interrupted();
   if (interrupted) {
     io.err << spec.name << ": interrupted by " << InterruptGuard::signal_name() << " after " << result.iterations
