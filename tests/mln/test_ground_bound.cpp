@@ -38,6 +38,15 @@ struct Chain {
   }
 };
 
+// Every e(x, y) true: the evidence literal `!e(x1, x2)` folds nothing away.
+void all_true(const Chain& ch, Evidence& ev) {
+  for (std::int32_t a = 0; a < ch.domain.size(0); ++a)
+    for (std::int32_t b = 0; b < ch.domain.size(0); ++b) {
+      const std::int32_t args[] = {a, b};
+      ev.set(ch.e, args, true);
+    }
+}
+
 struct LimitGuard {
   ~LimitGuard() { set_max_ground_clauses(kDefaultMaxGroundClauses); }
 };
@@ -61,11 +70,7 @@ TEST_CASE("ground bound: binding size, refined by closed-world evidence", "[mln]
 TEST_CASE("ground bound: a 17-variable chain over 8 constants is refused before grounding", "[mln][bound]") {
   Chain ch(17, 8);
   Evidence ev(ch.program, ch.domain);
-  for (std::int32_t a = 0; a < 8; ++a)
-    for (std::int32_t b = 0; b < 8; ++b) {
-      const std::int32_t args[] = {a, b};
-      ev.set(ch.e, args, true);
-    }
+  all_true(ch, ev);
   try {
     (void)ground(ch.program, ch.domain, ev);
     FAIL("no refusal");
@@ -92,11 +97,7 @@ TEST_CASE("ground bound: a 17-variable chain over 8 constants is refused before 
 TEST_CASE("cancellation: grounding and MC-SAT stop at a request; a CancelShield lets them run", "[mln][cancel]") {
   Chain ch(3, 8);
   Evidence ev(ch.program, ch.domain);
-  for (std::int32_t a = 0; a < 8; ++a)
-    for (std::int32_t b = 0; b < 8; ++b) {
-      const std::int32_t args[] = {a, b};
-      ev.set(ch.e, args, true);
-    }
+  all_true(ch, ev);
   const Grounding g = ground(ch.program, ch.domain, ev);
   io::request_cancel(15);
   CHECK_THROWS_AS(mc_sat(g.network, McSatOptions{}), io::Cancelled);
