@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <set>
 
-#include "runtime/mln/error.h"
 
 namespace ksmc::runtime::mln {
 namespace {
@@ -75,7 +74,7 @@ void check_ground_bound(const Program& program, const Domain& domain, const Evid
   for (const auto& c : program.clauses) {
     const GroundEstimate e = estimate_ground_clauses(program, domain, evidence, c);
     if (e.clauses > lim) {
-      throw MlnError("rule " + c.describe() + " would ground to up to " + count_text(e.clauses) +
+      throw GroundingTooLarge("rule " + c.describe() + " would ground to up to " + count_text(e.clauses) +
                      " clauses after evidence folding (binding " + e.binding + " = " + count_text(e.bindings) +
                      " groundings), above the limit of " + count_text(lim) +
                      "; raise it with --max-ground-clauses N, or add evidence / shrink the domains");
@@ -83,7 +82,7 @@ void check_ground_bound(const Program& program, const Domain& domain, const Evid
     total += e.clauses;
   }
   if (total > lim) {
-    throw MlnError("the rules together would ground to up to " + count_text(total) +
+    throw GroundingTooLarge("the rules together would ground to up to " + count_text(total) +
                    " clauses after evidence folding, above the limit of " + count_text(lim) +
                    "; raise it with --max-ground-clauses N");
   }

@@ -14,10 +14,18 @@
 #include <cstdint>
 #include <string>
 
+#include "runtime/mln/error.h"
 #include "runtime/mln/evidence.h"
 #include "runtime/mln/program.h"
 
 namespace ksmc::runtime::mln {
+
+// The refusal: a bad input (exit 1), never "this state is impossible" (which other
+// MlnErrors of grounding, like an unsatisfiable hard rule, mean to a kit's semantics).
+class GroundingTooLarge : public MlnError {
+ public:
+  using MlnError::MlnError;
+};
 
 inline constexpr std::uint64_t kDefaultMaxGroundClauses = 50'000'000;
 
@@ -35,7 +43,7 @@ struct GroundEstimate {
 GroundEstimate estimate_ground_clauses(const Program& program, const Domain& domain, const Evidence& evidence,
                                        const Clause& clause);
 
-// Throws MlnError for the first rule whose estimate exceeds max_ground_clauses(), and for
+// Throws GroundingTooLarge for the first rule whose estimate exceeds max_ground_clauses(), and for
 // a program whose rules together exceed it.
 void check_ground_bound(const Program& program, const Domain& domain, const Evidence& evidence);
 
