@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "runtime/domain/kernels.h"
+#include "runtime/io/cancel.h"
 #include "stdlib/indoor/detect/orientation.h"
 #include "stdlib/indoor/detect/rpb.h"
 #include "stdlib/indoor/detect/wbu.h"
@@ -182,11 +183,13 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
     throw cli::UsageError("--thresholds must be 'strict', 'ros' or 'bormann', got '" + th + "'");
   }
   auto map = std::make_shared<io::OccupancyMap>(io::load_map(path, opts));
+  runtime::io::throw_if_cancelled("indoor: after reading the map");  // large maps: each step takes long
   if (map->counts().free == 0) throw std::runtime_error(path.string() + ": the map has no free cell");
   const double res = map->resolution;
   const double solid_depth = in.flags.real("solid-depth");
   if (!(solid_depth >= 0.0) || !std::isfinite(solid_depth)) throw cli::UsageError("--solid-depth must be >= 0 metres");
   const std::size_t solid_cells = unexplain_solid_interior(map->grid, solid_depth / res);
+  runtime::io::throw_if_cancelled("indoor: after the solid interior");
   shared->grid = map->grid;
   shared->resolution = res;
   shared->seed = in.seed;
@@ -195,6 +198,7 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
   shared->tuning.source_refresh = flag_count(in.flags, "source-refresh");
 
   FixedSources fixed = fixed_sources(plan, *map, in);
+  runtime::io::throw_if_cancelled("indoor: after the fixed sources");
   shared->fixed_units = std::move(fixed.units);
   shared->frame_deg = fixed.frame_deg;
   shared->score.tables = plan.tables;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "runtime/domain/kernels.h"
+#include "runtime/io/cancel.h"
 #include "stdlib/segments/cloud.h"
 #include "stdlib/segments/kit/kernels.h"
 #include "stdlib/segments/kit/output.h"
@@ -26,6 +27,7 @@ cli::DomainSetup load(const blocks::Binding& binding, const cli::DomainInput& in
   shared->params = model_params(binding);
   const std::filesystem::path path = in.inputs.at(0);
   shared->points = std::make_shared<const std::vector<Vec2>>(load_points(path));
+  runtime::io::throw_if_cancelled("segments: after reading the points");
   const long long max_lines = in.flags.integer("max-segments");
   if (max_lines < 1 || max_lines > 10000) throw cli::UsageError("--max-segments must be in [1, 10000]");
   shared->max_lines = static_cast<std::size_t>(max_lines);
