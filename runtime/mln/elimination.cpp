@@ -351,6 +351,7 @@ EliminationPlan plan_elimination(const GroundNetwork& net, const Component& comp
   std::vector<std::vector<std::int32_t>> cvars(comp.clauses.size());
   std::vector<std::vector<std::int32_t>> adj(n);
   for (std::size_t k = 0; k < comp.clauses.size(); ++k) {
+    io::throw_if_cancelled("planning variable elimination");  // a long clause adds size^2 edges
     auto& vs = cvars[k];
     for (Lit l : net.clause(comp.clauses[k])) vs.push_back(var_of_local[local(lit_atom(l))]);
     std::sort(vs.begin(), vs.end());
@@ -360,6 +361,7 @@ EliminationPlan plan_elimination(const GroundNetwork& net, const Component& comp
         if (a != b) adj[a].push_back(b);
   }
   for (auto& nb : adj) {
+    io::throw_if_cancelled("planning variable elimination");
     std::sort(nb.begin(), nb.end());
     nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
   }
