@@ -309,6 +309,7 @@ void print_help(std::ostream& out) {
       << "  --samples N   infer: samples of gibbs / mcsat\n"
       << "  --burn-in N   infer: burn-in of gibbs / mcsat\n"
       << "  --result F    infer: also write the marginals to F in Alchemy's .result format\n"
+      << "  --max-ground-clauses N  infer: refuse a grounding estimated above N clauses (default 50,000,000)\n"
       << "  --data        learn: the files that follow are training worlds (.db)\n"
       << "  --l2 SIGMA    learn: standard deviation of the Gaussian prior on the weights (default 10)\n"
       << "  --help        this text\n"
@@ -334,7 +335,7 @@ int run(int argc, char** argv) {
     // Options that take a value.
     static const std::vector<std::string> kValued{"--out", "-o", "--evidence", "--query", "--method",
                                                   "--seed", "--samples", "--burn-in", "--keep", "-j",
-                                                  "--result", "--l2"};
+                                                  "--result", "--l2", "--max-ground-clauses"};
     if (std::find(kValued.begin(), kValued.end(), a) != kValued.end()) {
       if (i + 1 >= args.size()) {
         std::cerr << "ksmc: " << a << " needs a value\n";
@@ -349,6 +350,7 @@ int run(int argc, char** argv) {
         else if (a == "--samples") inv.infer.samples = infer::parse_count(v);
         else if (a == "--burn-in") inv.infer.burn_in = infer::parse_count(v);
         else if (a == "--result") inv.infer.result_path = v;
+        else if (a == "--max-ground-clauses") inv.infer.max_ground_clauses = infer::parse_count(v);
         else if (a == "--l2") inv.learn.prior_sigma = std::stod(v);
         else if (a == "--keep") inv.keep_dir = v;
         else if (a == "-j") {

@@ -13,6 +13,7 @@
 #include "runtime/mln/components.h"
 #include "runtime/mln/error.h"
 #include "runtime/mln/exact.h"
+#include "runtime/mln/ground_bound.h"
 #include "runtime/mln/evidence.h"
 #include "runtime/mln/grounder.h"
 #include "runtime/mln/inference.h"
@@ -127,6 +128,12 @@ int run_infer(const lower::MlnIr& ir, const InferRequest& request, std::ostream&
     err << "ksmc infer: --samples must be at least 1 (marginals from no samples are meaningless)\n";
     return 2;
   }
+  if (request.max_ground_clauses == 0) {
+    err << "ksmc infer: --max-ground-clauses must be at least 1\n";
+    return 2;
+  }
+  if (request.max_ground_clauses > 0)
+    runtime::mln::set_max_ground_clauses(static_cast<std::uint64_t>(request.max_ground_clauses));
   static const std::set<std::string> kMethods{"exact", "gibbs", "mcsat", "map", "auto"};
   if (!kMethods.count(request.method)) {
     err << "ksmc infer: unknown method '" << request.method << "' (exact, gibbs, mcsat, map or auto)\n";

@@ -22,6 +22,7 @@ struct InferRequest {
   std::int64_t burn_in = -1;         // < 0: the engine's default
   std::int64_t samples = -1;         // < 0: the engine's default; 0 is refused
   std::string result_path;           // --result FILE: also write Alchemy's .result format there
+  std::int64_t max_ground_clauses = -1;  // < 0: runtime/mln/ground_bound.h's default
 };
 
 // A sample or burn-in count from the command line: digits only ("1k", "-3", "" throw

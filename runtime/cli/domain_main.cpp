@@ -21,6 +21,7 @@
 #include "runtime/cli/run_outputs.h"
 #include "runtime/domain/config_error.h"
 #include "runtime/io/atomic_file.h"
+#include "runtime/mln/ground_bound.h"
 #include "runtime/report/page.h"
 
 namespace ksmc::runtime::cli {
@@ -40,6 +41,7 @@ struct CommonFlags {
   bool trace = false;
   std::string trace_every = "0";
   std::string max_input_mb = std::to_string(kDefaultMaxInputMb);
+  std::string max_ground_clauses = std::to_string(mln::kDefaultMaxGroundClauses);
   bool quiet = false;
   std::string evidence_out;
   std::vector<std::string> inputs;
@@ -56,6 +58,7 @@ struct Counts {
   std::optional<std::uint64_t> burn_in;
   std::uint64_t trace_every = 0;
   std::uint64_t max_input_bytes = 0;
+  std::uint64_t max_ground_clauses = 0;
 };
 
 Counts check_counts(const CommonFlags& cf) {
@@ -70,6 +73,7 @@ Counts check_counts(const CommonFlags& cf) {
   c.trace_every = parse_count("--trace-every", cf.trace_every);
   const std::uint64_t mb = parse_count("--max-input-mb", cf.max_input_mb, 1);
   c.max_input_bytes = mb > kCountMax / 1000000 ? kCountMax : mb * 1000000;
+  c.max_ground_clauses = parse_count("--max-ground-clauses", cf.max_ground_clauses, 1);
   if (c.burn_in && *c.burn_in > c.iterations) {
     throw UsageError(fmt::format("--burn-in {} exceeds --iterations {}", *c.burn_in, c.iterations));
   }
@@ -201,6 +205,8 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
     app.add_flag("--trace", cf.trace, "write trace.csv (log posterior and acceptance rate per chain)");
     app.add_option("--trace-every", cf.trace_every, "iterations between trace rows (default: iterations/1000; implies --trace)");
     app.add_option("--max-input-mb", cf.max_input_mb, "largest input file read, in MB")->capture_default_str();
+    app.add_option("--max-ground-clauses", cf.max_ground_clauses,
+                   "refuse a Markov logic grounding estimated above this many clauses")->capture_default_str();
     app.add_flag("--quiet,-q", cf.quiet, "no progress display");
     app.add_option("--evidence-out", cf.evidence_out,
                    "write the best state's evidence as an Alchemy .db (replay with ksmc infer --evidence)")
@@ -276,6 +282,7 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
 
   // From here on SIGINT, SIGTERM and SIGHUP only request cancellation (interrupt.h).
   InterruptGuard guard;
+  mln::set_max_ground_clauses(counts.max_ground_clauses);
   DomainSetup setup;
   try {
     for (const auto& p : input.inputs) check_input_file(p, counts.max_input_bytes);
@@ -322,6 +329,9 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
   } catch (const std::exception& e) {
     return failure_or_interrupted(io, spec, e);
   }
+  // The run has stopped: writing the outputs (which may run inference again) is not
+  // cancelled by the request that stopped it, nor by further signals.
+  const io::CancelShield shield;
   const bool interrupted = result.cancelled || InterruptGuard::interrupted();
   if (interrupted) {
     io.err << spec.name << ": interrupted by " << InterruptGuard::signal_name() << " after " << result.iterations

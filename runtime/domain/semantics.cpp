@@ -9,6 +9,7 @@
 #include "runtime/mln/error.h"
 #include "runtime/mln/evidence.h"
 #include "runtime/mln/exact.h"
+#include "runtime/mln/ground_bound.h"
 #include "runtime/mln/inference.h"
 #include "runtime/mln/maxwalksat.h"
 
@@ -216,6 +217,8 @@ std::shared_ptr<const Outcome> SemanticsCore::infer_bits(std::size_t n) {
         v[flat] = g.marginal(r, q, args);
       });
     }
+  } catch (const mln::GroundingTooLarge&) {
+    throw;  // a refusal of the input (--max-ground-clauses), not an impossible state
   } catch (const mln::MlnError& e) {
     // A hard rule cannot hold under this evidence: the state is impossible.
     for (const std::int32_t q : queries_) std::fill(out->values[static_cast<std::size_t>(q)].begin(),

@@ -22,6 +22,7 @@ namespace ksmc::runtime::io {
 namespace detail {
 inline std::atomic<bool> g_cancel_requested{false};
 inline std::atomic<int> g_cancel_signal{0};  // the first signal received, 0 = none or not a signal
+inline std::atomic<int> g_shields{0};        // live CancelShield objects
 static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_always_lock_free,
               "signal handlers need lock-free atomics");
 }  // namespace detail
@@ -54,10 +55,27 @@ class Cancelled : public std::runtime_error {
   explicit Cancelled(std::string_view where);
 };
 
-// Polls the request; throws Cancelled("<where>: interrupted by SIGTERM") when it is set.
-inline void throw_if_cancelled(std::string_view where) {
-  if (cancel_requested()) throw Cancelled(where);
+// Whether a long computation should stop now: a request is set and no CancelShield is alive.
+inline bool stop_requested() noexcept {
+  return cancel_requested() && detail::g_shields.load(std::memory_order_relaxed) == 0;
 }
+
+// Polls the request; throws Cancelled("<where>: interrupted by SIGTERM") when it is set
+// (and no CancelShield is alive).
+inline void throw_if_cancelled(std::string_view where) {
+  if (stop_requested()) throw Cancelled(where);
+}
+
+// While one is alive (any thread), stop_requested() and throw_if_cancelled() ignore the
+// request: the run has already stopped and the outputs of its best state are being
+// computed and written (which may run inference again); the request itself stays set.
+class CancelShield {
+ public:
+  CancelShield() noexcept { detail::g_shields.fetch_add(1); }
+  ~CancelShield() { detail::g_shields.fetch_sub(1); }
+  CancelShield(const CancelShield&) = delete;
+  CancelShield& operator=(const CancelShield&) = delete;
+};
 
 // Installs the cancelling handler for SIGINT, SIGTERM and SIGHUP (SA_RESTART, no
 // SA_RESETHAND: every further signal only sets the flag again) and, if `clear`, clears the

@@ -11,6 +11,7 @@
 #include <numeric>
 #include <string>
 
+#include "runtime/io/cancel.h"
 #include "runtime/mln/error.h"
 
 namespace ksmc::runtime::mln {
@@ -350,6 +351,7 @@ EliminationPlan plan_elimination(const GroundNetwork& net, const Component& comp
   std::vector<std::vector<std::int32_t>> cvars(comp.clauses.size());
   std::vector<std::vector<std::int32_t>> adj(n);
   for (std::size_t k = 0; k < comp.clauses.size(); ++k) {
+    io::throw_if_cancelled("planning variable elimination");  // a long clause adds size^2 edges
     auto& vs = cvars[k];
     for (Lit l : net.clause(comp.clauses[k])) vs.push_back(var_of_local[local(lit_atom(l))]);
     std::sort(vs.begin(), vs.end());
@@ -359,6 +361,7 @@ EliminationPlan plan_elimination(const GroundNetwork& net, const Component& comp
         if (a != b) adj[a].push_back(b);
   }
   for (auto& nb : adj) {
+    io::throw_if_cancelled("planning variable elimination");
     std::sort(nb.begin(), nb.end());
     nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
   }
@@ -366,7 +369,11 @@ EliminationPlan plan_elimination(const GroundNetwork& net, const Component& comp
   std::vector<std::int32_t> mark(n, 0);
   std::int32_t stamp = 0;
   std::vector<std::int64_t> fill(n);
-  for (std::size_t v = 0; v < n; ++v) fill[v] = fill_in(adj, static_cast<std::int32_t>(v), mark, stamp);
+  // fill_in costs degree^2: poll before each (dense components have thousands of neighbours).
+  for (std::size_t v = 0; v < n; ++v) {
+    io::throw_if_cancelled("planning variable elimination");
+    fill[v] = fill_in(adj, static_cast<std::int32_t>(v), mark, stamp);
+  }
   std::vector<std::int32_t> step_of(n, -1), merged, touched;
   // Candidates by (fill-in, degree, id); entries are replaced when a score changes.
   using Key = std::tuple<std::int64_t, std::size_t, std::int32_t>;
@@ -411,6 +418,7 @@ EliminationPlan plan_elimination(const GroundNetwork& net, const Component& comp
     std::sort(touched.begin(), touched.end());
     touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
     for (std::int32_t u : touched) {
+      io::throw_if_cancelled("planning variable elimination");
       fill[u] = fill_in(adj, u, mark, stamp);
       const Key k{fill[u], adj[u].size(), u};
       if (k == key_of[u]) continue;
@@ -468,6 +476,7 @@ double eliminate_component(const GroundNetwork& net, const Component& comp, cons
                            std::vector<double>& marg, std::vector<std::uint8_t>* mode, double* mode_lw) {
   if (static_cast<std::size_t>(plan.num_vars()) != plan.order.size())
     throw MlnError("exact inference: elimination plan incomplete (a cluster exceeded the table limit)");
+  io::throw_if_cancelled("variable elimination");
   JunctionTree jt(net, comp, plan);
   const double log_z = jt.sum_product(marg);
   if (mode) jt.max_product(*mode, mode_lw);

@@ -7,6 +7,7 @@
 #include <set>
 #include <string>
 
+#include "runtime/io/cancel.h"
 #include "runtime/mln/error.h"
 
 namespace ksmc::runtime::mln {
@@ -287,6 +288,7 @@ double solve_components(const GroundNetwork& net, std::span<const Component> com
   double log_z = 0.0;
   std::optional<Enumerator> e;
   for (std::size_t i = 0; i < comps.size(); ++i) {
+    io::throw_if_cancelled("exact inference");
     if (plans[i].solver == ExactPlan::Solver::Eliminate) {
       log_z += eliminate_component(net, comps[i], plans[i].elimination, marginals, mode, nullptr);
       continue;
@@ -308,6 +310,7 @@ std::vector<ExactPlan> plan_all(const GroundNetwork& net, const std::vector<Comp
   std::vector<ExactPlan> plans;
   plans.reserve(comps.size());
   for (const auto& comp : comps) {
+    io::throw_if_cancelled("planning exact inference");
     plans.push_back(plan_exact(net, comp, options));
     if (plans.back().solver == ExactPlan::Solver::TooLarge) throw MlnError(too_large_message(net, comp, options));
     summary.add(plans.back());

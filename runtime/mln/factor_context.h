@@ -9,6 +9,7 @@
 #include <initializer_list>
 #include <vector>
 
+#include "runtime/io/cancel.h"
 #include "runtime/mln/evidence.h"
 #include "runtime/mln/grounder.h"
 
@@ -25,7 +26,10 @@ class FactorContext {
   bool ev(std::int32_t predicate, std::int64_t flat) const { return evidence_.get_flat(predicate, flat) == 1; }
 
   // Starts the next grounding of the current clause.
-  void begin() { lits_.clear(); }
+  void begin() {
+    if ((++groundings_ & 0xFFFF) == 0) io::throw_if_cancelled("grounding");
+    lits_.clear();
+  }
 
   // Adds the literal over query atom p(flat) to the clause being built. Returns true when
   // the atom is fixed (by evidence or a folded block) so that the literal is true: the
@@ -58,6 +62,7 @@ class FactorContext {
   const Evidence& evidence_;
   const Domain& domain_;
   std::vector<Lit> lits_;
+  std::uint32_t groundings_ = 0;  // polls the cancel flag every 65,536 groundings
 };
 
 }  // namespace ksmc::runtime::mln

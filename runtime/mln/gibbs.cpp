@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "runtime/io/cancel.h"
 #include "runtime/mln/local_state.h"
 #include "runtime/mln/maxwalksat.h"
 
@@ -64,6 +65,7 @@ InferenceResult gibbs_sampling(const GroundNetwork& net, const GibbsOptions& opt
   std::vector<double> probs;
   const std::int64_t total = options.burn_in + options.samples;
   for (std::int64_t sweep = 0; sweep < total; ++sweep) {
+    io::throw_if_cancelled("Gibbs sampling");
     const bool record = sweep >= options.burn_in;
     for (const auto& group : groups) {
       Delta d;

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 
+#include "runtime/io/cancel.h"
 #include "runtime/mln/error.h"
+#include "runtime/mln/ground_bound.h"
 
 namespace ksmc::runtime::mln {
 namespace {
@@ -33,6 +35,7 @@ class Grounder {
   // Query index, exactly-one blocks and free atoms: everything but the clauses.
   void prepare() {
     program_.validate();
+    check_ground_bound(program_, domain_, evidence_);
     index_query_atoms();
     fold_blocks();
     assign_atoms();
@@ -206,7 +209,9 @@ class Grounder {
     std::vector<std::int32_t> value(nv, 0);
     std::vector<Lit> out;
     auto size_of = [&](std::int32_t v) { return domain_.size(c.variables[v].type); };
+    std::uint32_t polls = 0;
     while (true) {
+      if ((++polls & 0xFFFF) == 0) io::throw_if_cancelled("grounding");
       out.clear();
       bool satisfied = false;
       for (const auto& rl : lits) {

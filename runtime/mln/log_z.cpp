@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "runtime/mln/components.h"
+#include "runtime/io/cancel.h"
 #include "runtime/mln/error.h"
 #include "runtime/mln/local_state.h"
 
@@ -29,6 +30,7 @@ std::pair<double, double> ais_log_z(const GroundNetwork& net, const LogZOptions&
     st.randomize(rng);  // exact sample of f_0
     double lw = 0.0;
     for (std::int32_t t = 1; t <= T; ++t) {
+      io::throw_if_cancelled("estimating log Z");
       const double beta_prev = static_cast<double>(t - 1) / T;
       const double beta = static_cast<double>(t) / T;
       lw -= (beta - beta_prev) * (st.soft_cost() + H * st.hard_bad());

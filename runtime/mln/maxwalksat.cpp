@@ -3,6 +3,7 @@
 #include <set>
 #include <string>
 
+#include "runtime/io/cancel.h"
 #include "runtime/mln/error.h"
 
 namespace ksmc::runtime::mln {
@@ -28,6 +29,7 @@ void greedy_descent(LocalState& st) {
   const GroundNetwork& net = st.network();
   for (bool changed = true; changed;) {
     changed = false;
+    io::throw_if_cancelled("MaxWalkSAT");
     for (AtomId a = 0; a < net.num_atoms(); ++a) {
       const std::int32_t b = net.block_of(a);
       if (b < 0) {
@@ -111,6 +113,7 @@ MapResult max_walksat(const GroundNetwork& net, const MapOptions& options) {
         last_improvement = f;
       }
       if (st.num_bad() == 0 || f >= options.max_flips || f - last_improvement > stall) break;
+      if ((f & 1023) == 1023) io::throw_if_cancelled("MaxWalkSAT");
       walksat_step(st, rng, options.noise);
       ++best.flips;
       if ((f & 1023) == 1023) st.refresh_cost();
@@ -145,6 +148,7 @@ std::vector<std::uint8_t> find_feasible_state(const GroundNetwork& net, const Oc
     st.randomize(rng);
     for (std::int64_t f = 0; f < 10000 + 10 * net.num_atoms() && flips < max_flips; ++f, ++flips) {
       if (st.num_bad() == 0) return st.values();
+      if ((f & 1023) == 1023) io::throw_if_cancelled("finding a state that satisfies the hard rules");
       walksat_step(st, rng, 0.2);
     }
     if (st.num_bad() == 0) return st.values();

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <vector>
 
+#include "runtime/io/cancel.h"
 #include "runtime/mln/local_state.h"
 #include "runtime/mln/maxwalksat.h"
 
@@ -52,6 +53,7 @@ InferenceResult mc_sat(const GroundNetwork& net, const McSatOptions& options) {
   r.marginals.assign(static_cast<std::size_t>(net.num_atoms()), 0.0);
   const std::int64_t total = options.burn_in + options.samples;
   for (std::int64_t it = 0; it < total; ++it) {
+    io::throw_if_cancelled("MC-SAT");
     // The slice: clauses the current state gets right, each kept with prob. 1 - e^-|w|.
     for (std::int32_t c = 0; c < m; ++c) {
       const bool right = (st.sat_count(c) > 0) == (want[c] != 0);
@@ -61,6 +63,7 @@ InferenceResult mc_sat(const GroundNetwork& net, const McSatOptions& options) {
     saved = st.values();
     // SampleSAT from the current state (which satisfies the slice).
     for (std::int32_t s = 0; s < steps; ++s) {
+      if ((s & 1023) == 1023) io::throw_if_cancelled("MC-SAT");
       if (st.num_bad() == 0 || rng.uniform() < options.sa_probability) sa_step(st, vars, rng, options.temperature);
       else walksat_step(st, rng, options.walk_noise);
     }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "runtime/io/cancel.h"
 #include "runtime/mcmc/rng.h"
 
 namespace ksmc::stdlib::segments {
@@ -52,6 +53,7 @@ std::vector<Candidate> detect_candidates(const std::vector<Vec2>& points, const 
   const std::size_t tries = static_cast<std::size_t>(params.candidates) * 20;
   const std::size_t min_in = static_cast<std::size_t>(std::max(2, params.min_inliers));
   for (std::size_t t = 0; t < tries && out.size() < static_cast<std::size_t>(params.candidates); ++t) {
+    runtime::io::throw_if_cancelled("segments: RANSAC birth candidates");  // each try reads every point
     const auto i = static_cast<std::uint32_t>(rng.uniform_int(n));
     const auto j = static_cast<std::uint32_t>(rng.uniform_int(n));
     if (i == j) continue;
