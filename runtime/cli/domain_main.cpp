@@ -170,7 +170,9 @@ int failure_or_interrupted(const CliStreams& io, const DomainSpec& spec, const s
 // a warning, the run's results stand.
 void write_report(OutputDir& out, const nlohmann::json& summary, const DomainSpec& spec, const CliStreams& io) {
   try {
-    out.write("report.html", report::report_html(out.dir(), summary));
+    const std::filesystem::path& t = out.target();
+    const std::string name = (t.filename().empty() ? t.parent_path().filename() : t.filename()).string();
+    out.write("report.html", report::report_html(out.dir(), summary, name));
   } catch (const std::exception& e) {
     io.err << spec.name << ": warning: report.html not written: " << e.what() << '\n';
   }

@@ -97,8 +97,10 @@ std::string render_page(const nlohmann::json& data) {
                      {"SCRIPTS", scripts}});
 }
 
-std::string report_html(const std::filesystem::path& dir, const nlohmann::json& summary) {
-  return render_page(collect_run_data(dir, summary));
+std::string report_html(const std::filesystem::path& dir, const nlohmann::json& summary, const std::string& folder_name) {
+  nlohmann::json data = collect_run_data(dir, summary);
+  if (!folder_name.empty()) data["folder"] = folder_name;
+  return render_page(data);
 }
 
 }  // namespace ksmc::runtime::report

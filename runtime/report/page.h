@@ -15,7 +15,10 @@ std::string script_safe_json(const nlohmann::json& data);
 // The page for collect_run_data's result.
 std::string render_page(const nlohmann::json& data);
 
-// collect_run_data + render_page: the report.html text of a run's output folder.
-std::string report_html(const std::filesystem::path& dir, const nlohmann::json& summary);
+// collect_run_data + render_page: the report.html text of a run's output folder `dir`;
+// `folder_name` (when given) is the name the page shows, e.g. the --out folder while the
+// files are still in its staging folder.
+std::string report_html(const std::filesystem::path& dir, const nlohmann::json& summary,
+                        const std::string& folder_name = {});
 
 }  // namespace ksmc::runtime::report
