@@ -16,7 +16,7 @@ struct RunSettings {
   long long iterations = 5000;
   long long seed = 1;
   int chains = 1;
-  std::vector<std::string> extra_args;  // further domain flags, e.g. {"--semantic-every", "200"}
+  std::vector<std::string> extra_args;  // further domain flags, e.g. {"--source-refresh", "100"}
 };
 
 struct RunOutcome {

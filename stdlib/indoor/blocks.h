@@ -57,6 +57,16 @@ bool hall_like(const Scene& s, const Unit& u, double big_size, double big_ratio)
 bool adjacent(const Scene& s, const Unit& a, const Unit& b, double dilate);
 // At least `min_doors` of `doors` are attached to the unit.
 bool multi_door(const Scene& s, const Unit& u, std::span<const Door> doors, int min_doors);
+// The unit's shorter side is below `min_width` (m): no robot stands in it (a sliver on a wall).
+bool thin(const Scene& s, const Unit& u, double min_width);
+// More than `max_fraction` of the map cells inside the unit are not free (occupied or
+// unknown): the unit lies on walls or outside the mapped space. Measured on a grid of up to
+// 24 x 24 sample points over the unit; false without a map.
+bool blocked(const Scene& s, const Unit& u, double max_fraction);
+// Two units with connecting walls (as geom.adjacent with `dilate`) whose common stretch has a
+// free run longer than `max_gap` (m) along the line midway between the two walls: no wall
+// separates them there, wider than a door. False without a map. Symmetric.
+bool open_join(const Scene& s, const Unit& a, const Unit& b, double dilate, double max_gap);
 }  // namespace geom
 
 // ---- functions and term priors -----------------------------------------------------------
@@ -76,9 +86,15 @@ struct OverlapPenalty {
   double psi2 = 1.0;  // log prior -= psi2 per overlapping cell
   bool operator==(const OverlapPenalty&) const = default;
 };
-using Prior = std::variant<RectPenalty, OverlapPenalty>;
+// `prior mln`: log Z(evidence of W) - log Z(no evidence atom holds), the Markov logic score
+// of the world's evidence (a violated hard rule makes W impossible).
+struct MlnPrior {
+  bool operator==(const MlnPrior&) const = default;
+};
+using Prior = std::variant<RectPenalty, OverlapPenalty, MlnPrior>;
 Prior rect_penalty(double psi1, double tol);
 Prior overlap_penalty(double psi2);
+Prior mln();
 
 // ---- likelihood ----------------------------------------------------------------------------------
 namespace grid {

@@ -112,12 +112,14 @@ TEST_CASE("the semantic layer types the units from the type group and is cached 
     CHECK(t.units[0] != 4);
     CHECK(t.units[1] != 4);
   }
-  // The terms on a later world: same-length rooms add nothing, a shorter one is penalised,
-  // a removed unit drops its bindings.
-  CHECK(sem.log_prior(w, {{0, {1, 2}}}) == Approx(0.0).margin(1e-12));
+  // The terms are part of the world's knowledge score: same-length rooms add nothing, a
+  // shorter one is penalised in both orders, equally.
+  CHECK(r.log_terms == Approx(0.0).margin(1e-12));
   const World shorter = world_of({{40, 30, 80, 60, 0}, {120, 30, 80, 48, 0}});  // 60 vs 48 cells: 0.6 m
-  CHECK(sem.log_prior(shorter, {{0, {1, 2}}}) == Approx(-2.0));
-  CHECK(sem.log_prior(shorter, {{0, {1, 7}}}) == 0.0);
+  const SemanticResult rs = sem.evaluate(shorter);
+  REQUIRE(rs.terms.size() == 2);
+  CHECK(rs.log_terms < 0.0);
+  CHECK(rs.log_knowledge() == Approx(rs.log_terms + rs.log_mln));
   // The outputs: every query atom by name, units u<id>.
   const auto q = sem.queries_json(r);
   CHECK(q.at("Room").at("u1").get<double>() == Approx(r.type_probs[0][0]));
@@ -148,5 +150,5 @@ TEST_CASE("conditional priors on any predicate and condition", "[indoor_kit]") {
   for (const auto& t : r.terms) (t.prior == 0 ? not_room : adjacent) += 1;
   CHECK(not_room == 2);   // the corridor and the hall
   CHECK(adjacent == 6);   // 1-2, 1-3, 2-3 in both orders
-  CHECK(sem.log_prior(w, r.terms) == Approx(-8.0));
+  CHECK(r.log_terms == Approx(-8.0));
 }

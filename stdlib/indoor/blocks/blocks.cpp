@@ -39,6 +39,58 @@ bool multi_door(const Scene&, const Unit& u, std::span<const Door> doors, int mi
   return n >= min_doors;
 }
 
+bool thin(const Scene& s, const Unit& u, double min_width) {
+  return std::min(std::abs(u.rect.w), std::abs(u.rect.h)) * s.resolution() < min_width;
+}
+
+bool blocked(const Scene& s, const Unit& u, double max_fraction) {
+  const ClassGrid* map = s.map();
+  if (map == nullptr) return false;
+  const OrientedRect& r = u.rect;
+  const double c = std::cos(r.theta), sn = std::sin(r.theta);
+  const int nu = std::clamp(static_cast<int>(std::abs(r.w)), 1, 24), nv = std::clamp(static_cast<int>(std::abs(r.h)), 1, 24);
+  int total = 0, not_free = 0;
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      const double lx = ((i + 0.5) / nu - 0.5) * r.w, ly = ((j + 0.5) / nv - 0.5) * r.h;
+      const int col = static_cast<int>(std::floor(r.cx + c * lx - sn * ly));
+      const int row = static_cast<int>(std::floor(r.cy + sn * lx + c * ly));
+      ++total;
+      if (row < 0 || col < 0 || row >= map->rows || col >= map->cols || (*map)(row, col) != static_cast<std::uint8_t>(Cell::Free))
+        ++not_free;
+    }
+  return not_free > max_fraction * total;
+}
+
+bool open_join(const Scene& s, const Unit& a, const Unit& b, double dilate, double max_gap) {
+  const ClassGrid* map = s.map();
+  if (map == nullptr || a.id == b.id) return false;
+  const auto [p, q] = ordered(a, b);
+  const auto w = connecting_walls(p->rect, q->rect, dilate);
+  if (!w) return false;
+  const auto cp = p->rect.corners(), cq = q->rect.corners();
+  const Point2 p0 = cp[static_cast<std::size_t>(w->wall_a)], p1 = cp[static_cast<std::size_t>((w->wall_a + 1) % 4)];
+  const Point2 q0 = cq[static_cast<std::size_t>(w->wall_b)], q1 = cq[static_cast<std::size_t>((w->wall_b + 1) % 4)];
+  const double la = std::hypot(p1.x - p0.x, p1.y - p0.y);
+  const double dx = (p1.x - p0.x) / la, dy = (p1.y - p0.y) / la;
+  // The stretch of wall a that wall b overlaps, moved to the midline between the walls.
+  const double t0 = dx * (q0.x - p0.x) + dy * (q0.y - p0.y), t1 = dx * (q1.x - p0.x) + dy * (q1.y - p0.y);
+  const double lo = std::max(0.0, std::min(t0, t1)), hi = std::min(la, std::max(t0, t1));
+  const double off = 0.5 * (dx * (q0.y - p0.y) - dy * (q0.x - p0.x));  // signed half distance across
+  const double nx = -dy, ny = dx;
+  const double need = max_gap / s.resolution();
+  double run = 0.0;
+  for (double t = lo + 0.5; t < hi; t += 1.0) {
+    const int col = static_cast<int>(std::floor(p0.x + dx * t + nx * off));
+    const int row = static_cast<int>(std::floor(p0.y + dy * t + ny * off));
+    const bool free = row >= 0 && col >= 0 && row < map->rows && col < map->cols &&
+                      (*map)(row, col) == static_cast<std::uint8_t>(Cell::Free);
+    run = free ? run + 1.0 : 0.0;
+    if (run > need) return true;
+  }
+  return false;
+}
+
 }  // namespace geom
 
 double wall_length_diff(const Scene& s, const Unit& a, const Unit& b) {
@@ -51,6 +103,7 @@ double gaussian(const Scene&, double x, double sigma) { return -0.5 * (x / sigma
 
 Prior rect_penalty(double psi1, double tol) { return RectPenalty{psi1, tol}; }
 Prior overlap_penalty(double psi2) { return OverlapPenalty{psi2}; }
+Prior mln() { return MlnPrior{}; }
 
 grid::Occupancy grid::occupancy(std::vector<std::vector<double>> lut, std::vector<std::int32_t> lenient_types,
                                 std::vector<std::vector<double>> lenient_lut) {

@@ -74,7 +74,10 @@ IndoorModel::IndoorModel(std::shared_ptr<const SharedInput> in) : in_(std::move(
     p->ks = std::make_unique<KernelSet>(*in_->evidence, std::move(src), kp);
     pools_.push_back(std::move(pool));
   }
-  if (in_->plan.semantic) sem_.emplace(*in_->binding, in_->plan, in_->resolution, &in_->grid, in_->seed);
+  if (in_->plan.semantic) {
+    sem_.emplace(*in_->binding, in_->plan, in_->resolution, &in_->grid, in_->seed);
+    adopt(sem_->evaluate(sw_.world()), KernelKind::Add);
+  }
 }
 
 IndoorModel::~IndoorModel() = default;
@@ -132,6 +135,23 @@ std::vector<UnitChange> IndoorModel::relabel(const SemanticResult& r) const {
   return out;
 }
 
+std::optional<Move> IndoorModel::adopt(SemanticResult r, KernelKind kind) {
+  std::optional<Move> applied;
+  if (r.possible()) {  // an impossible world is rejected: its tables do not matter
+    auto changes = relabel(r);
+    if (!changes.empty()) {
+      Move m;
+      m.kind = kind;
+      m.units = std::move(changes);
+      sw_.apply(m);
+      applied = std::move(m);
+    }
+  }
+  knowledge_ = r.log_knowledge();
+  current_ = std::move(r);
+  return applied;
+}
+
 bool IndoorModel::propose(std::size_t kernel, mcmc::Rng& rng, double& log_q_fwd, double& log_q_bwd) {
   if (pending_) throw std::logic_error("IndoorModel: propose() before the previous proposal ended");
   const KernelPlan& kp = in_->plan.kernels[kernel];
@@ -143,50 +163,55 @@ bool IndoorModel::propose(std::size_t kernel, mcmc::Rng& rng, double& log_q_fwd,
   }
   const RunTuning& t = in_->tuning;
   if (t.source_refresh > 0 && (iteration_ == 1 || iteration_ % t.source_refresh == 0)) refresh_sources();
-  Pending pend;
-  pend.old_offset = offset_;
-  pend.old_terms = terms_;
-  pend.old_term = term_log_prior_;
-  if (sem_ && t.semantic_every > 0 && iteration_ >= t.semantic_after &&
-      (iteration_ - t.semantic_after) % t.semantic_every == 0)
-    semantic_due_ = true;
-  double target_shift = 0.0;
-  if (semantic_due_ && sw_.world().units().size() > t.semantic_max_units) semantic_due_ = false;
-  if (semantic_due_) {
-    // The refresh changes the target (types -> tables, conditional prior bindings) for the
-    // current world W; its own change of log p(W) goes into the offset so that the engine's
-    // acceptance ratio compares M' with M under the refreshed target.
-    const double before = log_posterior();
-    if (!due_result_) due_result_ = sem_->evaluate(sw_.world());
-    const SemanticResult& r = *due_result_;
-    auto changes = relabel(r);
-    if (!changes.empty()) {
-      Move m;
-      m.kind = k;
-      m.units = std::move(changes);
-      sw_.apply(m);
-      pend.relabel = std::move(m);
-    }
-    terms_ = r.terms;
-    term_log_prior_ = sem_->log_prior(sw_.world(), terms_);
-    target_shift = log_posterior() - before;
-    offset_ += target_shift;
-    pend.refresh = true;
-  }
   auto p = pools_[kp.pool]->ks->propose(k, sw_.world(), krng_);
-  if (!p) {
-    // Declined: undo the refresh too (it stays due and rides on the next proposal).
-    if (pend.relabel) sw_.revert(*pend.relabel);
-    terms_ = std::move(pend.old_terms);
-    term_log_prior_ = pend.old_term;
-    offset_ = pend.old_offset;
-    return false;
-  }
+  if (!p) return false;  // declined: untouched
+  Pending pend;
   // Previewed when possible: a rejection then costs no revert (see ScoredWorld::preview).
   pend.previewed = sw_.preview(p->move);
   if (!pend.previewed) sw_.apply(p->move);
+  if (sem_) {
+    // The knowledge part of log p(W') on the proposed world: the units the move touched
+    // (directly or through a door) are the constants whose evidence may have changed.
+    std::vector<UnitId> changed;
+    for (const UnitChange& c : p->move.units) changed.push_back(c.id);
+    for (const DoorChange& c : p->move.doors)
+      for (const auto& d : {c.before, c.after})
+        if (d) changed.insert(changed.end(), {d->unit_a, d->unit_b});
+    pend.old_semantics = std::move(current_);
+    pend.old_knowledge = knowledge_;
+    current_.reset();
+    SemanticResult r = pend.old_semantics ? sem_->evaluate(sw_.world(), *pend.old_semantics, changed)
+                                          : sem_->evaluate(sw_.world());
+    auto relabels = r.possible() ? relabel(r) : std::vector<UnitChange>{};  // impossible: rejected anyway
+    if (!relabels.empty() && pend.previewed) {
+      // A type changed: the tables switch inside this proposal. Previewed as one move with the
+      // kernel's when it fits, so that a rejection still costs no revert.
+      Move merged = p->move;
+      for (UnitChange& c : relabels) {
+        auto it = std::find_if(merged.units.begin(), merged.units.end(), [&](const UnitChange& m) { return m.id == c.id; });
+        if (it == merged.units.end()) merged.units.push_back(std::move(c));
+        else it->after->lut_class = c.after->lut_class;
+      }
+      relabels.clear();
+      sw_.discard();
+      pend.previewed = sw_.preview(merged);
+      if (pend.previewed) p->move = std::move(merged);
+      else {
+        sw_.apply(p->move);
+        relabels = relabel(r);
+      }
+    }
+    if (!relabels.empty()) {
+      Move m;
+      m.kind = k;
+      m.units = std::move(relabels);
+      sw_.apply(m);
+      pend.relabel = std::move(m);
+    }
+    knowledge_ = r.log_knowledge();
+    current_ = std::move(r);
+  }
   pend.move = std::move(p->move);
-  if (!terms_.empty()) term_log_prior_ = sem_->log_prior(sw_.world(), terms_);
   log_q_fwd = p->log_q_fwd;
   log_q_bwd = p->log_q_bwd;
   pending_ = std::move(pend);
@@ -194,26 +219,20 @@ bool IndoorModel::propose(std::size_t kernel, mcmc::Rng& rng, double& log_q_fwd,
 }
 
 void IndoorModel::accept() {
-  if (pending_ && pending_->refresh) semantic_due_ = false;
-  due_result_.reset();  // the world changed (or the refresh is done)
   if (pending_ && pending_->previewed) sw_.commit();
   pending_.reset();
 }
 
 void IndoorModel::reject() {
   if (!pending_) return;
+  if (pending_->relabel) sw_.revert(*pending_->relabel);
   if (pending_->previewed) sw_.discard();
   else if (pending_->move) sw_.revert(*pending_->move);
-  if (pending_->relabel) sw_.revert(*pending_->relabel);
-  terms_ = std::move(pending_->old_terms);
-  term_log_prior_ = pending_->old_term;
-  offset_ = pending_->old_offset;
+  if (sem_) {
+    current_ = std::move(pending_->old_semantics);
+    knowledge_ = pending_->old_knowledge;
+  }
   pending_.reset();
-}
-
-std::optional<SemanticResult> IndoorModel::final_semantics() {
-  if (!sem_) return std::nullopt;
-  return sem_->evaluate(sw_.world());
 }
 
 mcmc::Snapshot IndoorModel::snapshot() const {
@@ -225,13 +244,9 @@ mcmc::Snapshot IndoorModel::snapshot() const {
   mcmc::Snapshot doors = mcmc::Snapshot::array();
   for (const Door& d : sw_.world().doors())
     doors.push_back({{"id", d.id}, {"a", d.unit_a}, {"b", d.unit_b}, {"ax", d.a.x}, {"ay", d.a.y}, {"bx", d.b.x}, {"by", d.b.y}});
-  mcmc::Snapshot terms = mcmc::Snapshot::array();
-  for (const PriorBinding& b : terms_) terms.push_back({{"prior", b.prior}, {"units", b.units}});
   s["units"] = std::move(units);
   s["doors"] = std::move(doors);
-  s["terms"] = std::move(terms);
   s["proposals"] = iteration_;
-  s["target_offset"] = offset_;
   return s;
 }
 
@@ -254,16 +269,14 @@ void IndoorModel::restore(const mcmc::Snapshot& s) {
     World w;
     w.apply(m);
     sw_.reset(w);
-    terms_.clear();
-    for (const auto& b : s.at("terms")) terms_.push_back({b.at("prior").get<std::size_t>(), b.at("units").get<std::vector<std::uint64_t>>()});
     iteration_ = s.value("proposals", std::uint64_t{0});
-    offset_ = s.value("target_offset", 0.0);
   } catch (const nlohmann::json::exception& e) {
     throw std::invalid_argument(std::string("indoor state snapshot: ") + e.what());
   }
-  term_log_prior_ = sem_ ? sem_->log_prior(sw_.world(), terms_) : 0.0;
-  due_result_.reset();
   pending_.reset();
+  current_.reset();
+  knowledge_ = 0.0;
+  if (sem_) adopt(sem_->evaluate(sw_.world()), KernelKind::Add);
 }
 
 }  // namespace ksmc::stdlib::indoor::kit

@@ -1,19 +1,21 @@
 // The indoor model behind the runtime/mcmc engine: a ScoredWorld (incremental likelihood +
 // weak prior), one KernelSet per source pool (each kernel draws from the proposal sources its
-// declaration names, KitPlan), plus the semantic layer: every `semantic_every` proposals the
-// Markov logic types of the units are refreshed (cached by evidence) and folded into that
-// proposal: units whose type is a lenient type of the likelihood switch to the lenient table,
-// and the bindings of the conditional priors whose conditions hold add their terms. The
-// refresh rides on the next proposal (a rejection undoes it and it stays due). It changes the
-// target (like a tempering step): its own jump of log p(W) on the current world is added to a
-// running offset that log_prior() subtracts, so the engine's acceptance ratio compares M' with
-// M under the refreshed target and its best state is tracked along one continuous scale.
+// declaration names, KitPlan), plus the semantic layer. The target is one fixed posterior:
+//   log p(W|M) = log p(M|W, types(W)) + weak prior(W) + knowledge(W)
+// where types(W) are the most probable unit types Markov logic gives for the evidence of W
+// (units of a lenient type use the lenient table) and knowledge(W) is the sum of the
+// conditional prior terms whose conditions hold plus, with `prior mln`, the Markov logic score
+// of the evidence. Every proposal evaluates it on the proposed world: the evidence atoms of
+// the units the move touched are re-extracted, inference is recalled from the evidence cache
+// or run exactly (runtime/mln, per component), units whose type changed switch tables inside
+// the same proposal. A world whose evidence violates a hard rule has probability 0.
 #pragma once
 
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <random>
+#include <span>
 #include <vector>
 
 #include "runtime/mcmc/model.h"
@@ -26,10 +28,7 @@
 namespace ksmc::stdlib::indoor::kit {
 
 struct RunTuning {
-  std::uint64_t semantic_every = 500;   // proposals between semantic refreshes (0 = never)
-  std::uint64_t semantic_after = 0;     // first proposal with a semantic refresh
-  std::uint64_t source_refresh = 200;   // proposals between FSU / door candidate refreshes
-  std::size_t semantic_max_units = 80;  // worlds with more units skip the refresh (cost bound)
+  std::uint64_t source_refresh = 200;  // proposals between FSU / door candidate refreshes
 };
 
 // Everything the chains share (read-only after construction).
@@ -53,13 +52,9 @@ class IndoorModel final : public runtime::mcmc::Model {
   ~IndoorModel() override;
 
   double log_likelihood() const override { return sw_.log_likelihood(); }
-  // log p(W) of the current target minus target_offset(): the sum of the log-posterior jumps
-  // of the semantic refreshes, so that the engine's running value, its acceptance ratios and
-  // its best state stay comparable across refreshes (see the header comment).
-  double log_prior() const override { return sw_.log_prior() + term_log_prior_ - offset_; }
-  double target_offset() const { return offset_; }
-  // log p(D|W) + log p(W) under the current target, without the offset.
-  double true_log_posterior() const { return sw_.log_likelihood() + sw_.log_prior() + term_log_prior_; }
+  double log_prior() const override { return sw_.log_prior() + knowledge_; }
+  // The knowledge part of log p(W) (see the header comment); -inf for an impossible world.
+  double log_knowledge() const { return knowledge_; }
   void accept() override;
   void reject() override;
   runtime::mcmc::Snapshot snapshot() const override;
@@ -72,13 +67,16 @@ class IndoorModel final : public runtime::mcmc::Model {
   const ScoredWorld& scored() const { return sw_; }
   const SharedInput& input() const { return *in_; }
   SemanticLayer* semantics() { return sem_ ? &*sem_ : nullptr; }
-  // Runs the semantic layer on the current state now (outside any proposal): for results.
-  std::optional<SemanticResult> final_semantics();
+  // The semantic layer's result for the current state (nullopt without a rule base).
+  std::optional<SemanticResult> final_semantics() const { return current_; }
   std::uint64_t proposals() const { return iteration_; }
 
  private:
   struct Pool;
   void refresh_sources();
+  // Makes `r` (the semantics of the current world) current: switches the tables of the units
+  // whose type changed (returns that move, applied) and sets the knowledge term.
+  std::optional<Move> adopt(SemanticResult r, KernelKind kind);
   std::vector<UnitChange> relabel(const SemanticResult& r) const;
 
   std::shared_ptr<const SharedInput> in_;
@@ -88,21 +86,13 @@ class IndoorModel final : public runtime::mcmc::Model {
   std::mt19937_64 krng_;
   bool krng_seeded_ = false;
   std::uint64_t iteration_ = 0;
-  bool semantic_due_ = false;
-  // The due refresh's inference on the current world: a rejected or declined proposal leaves
-  // the world as it was, so the retry reuses it (cleared when a proposal is accepted).
-  std::optional<SemanticResult> due_result_;
-  // Semantic state: the conditional prior bindings of the last refresh and their sum.
-  std::vector<PriorBinding> terms_;
-  double term_log_prior_ = 0.0;
-  double offset_ = 0.0;
+  std::optional<SemanticResult> current_;  // semantics of the current world
+  double knowledge_ = 0.0;                 // current_->log_knowledge()
   // Pending proposal.
   struct Pending {
     std::optional<Move> relabel, move;
-    std::vector<PriorBinding> old_terms;
-    double old_term = 0.0;
-    double old_offset = 0.0;
-    bool refresh = false;
+    std::optional<SemanticResult> old_semantics;
+    double old_knowledge = 0.0;
     bool previewed = false;  // `move` is an open ScoredWorld preview (commit on accept)
   };
   std::optional<Pending> pending_;

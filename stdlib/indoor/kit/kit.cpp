@@ -91,10 +91,10 @@ io::WorldResult make_result(IndoorModel& m, const io::OccupancyMap& map, const s
   r.metrics["iterations"] = static_cast<double>(run.iterations);
   r.metrics["seconds"] = secs;
   r.metrics["iterations_per_second"] = secs > 0.0 ? static_cast<double>(run.iterations) / secs : 0.0;
-  r.metrics["log_posterior"] = m.true_log_posterior();
+  r.metrics["log_posterior"] = m.log_posterior();
   r.metrics["log_likelihood"] = m.log_likelihood();
-  r.metrics["log_prior"] = m.true_log_posterior() - m.log_likelihood();
-  r.metrics["target_offset"] = m.target_offset();
+  r.metrics["log_prior"] = m.log_prior();
+  r.metrics["log_knowledge"] = m.log_knowledge();
   r.metrics["units"] = static_cast<double>(w.units().size());
   r.metrics["doors"] = static_cast<double>(w.doors().size());
   r.metrics["best_iteration"] = static_cast<double>(run.best().best_iteration);
@@ -200,8 +200,6 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
   shared->grid = map->grid;
   shared->resolution = res;
   shared->seed = in.seed;
-  shared->tuning.semantic_every = flag_count(in.flags, "semantic-every");
-  shared->tuning.semantic_after = flag_count(in.flags, "semantic-after");
   shared->tuning.source_refresh = flag_count(in.flags, "source-refresh");
 
   FixedSources fixed = fixed_sources(plan, *map, in);
@@ -244,8 +242,7 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
   extra["rpb_candidate"] = fixed.rpb_found;
   extra["frame_deg"] = fixed.frame_deg;
   extra["solid_interior"] = {{"depth_m", solid_depth}, {"cells_unexplained", solid_cells}};
-  extra["semantic"] = {{"enabled", plan.semantic}, {"every", shared->tuning.semantic_every},
-                       {"after", shared->tuning.semantic_after}};
+  extra["semantic"] = {{"enabled", plan.semantic}, {"mln_prior", plan.mln_prior}};
   setup.summary_extra = std::move(extra);
   return setup;
 }
@@ -265,8 +262,6 @@ cli::DomainSpec domain_spec(const blocks::Binding& b) {
       {"resolution", "metres per cell (overrides the YAML / PGM comment; default 0.05 for bare images)", "", K::real},
       {"robot", "robot position x,y in metres (map frame): seeds the RPB detector", "", K::text},
       {"thresholds", "grey values of bare images: strict (>= 250 free, map_server occupied, else unknown), ros (map_server) or bormann (>= 250 free, else occupied); a YAML sets its own", "strict", K::text},
-      {"semantic-every", "proposals between Markov logic refreshes of the unit types (0 = never)", "500", K::integer},
-      {"semantic-after", "first proposal with a Markov logic refresh", "1000", K::integer},
       {"source-refresh", "proposals between FSU / door candidate refreshes", "200", K::integer},
       {"solid-depth", "occupied cells farther than this (m) from every free cell are classified unexplained: the inside of solid black regions, e.g. a map's outside painted black (0 = eq. 3.7 as is)", "0.5", K::real},
   };

@@ -1,7 +1,7 @@
 // The indoor stdlib kit: turns the binding generated from a domain file (docs/binding.md §3)
 // into the DomainSpec of the domain binary:
 //   indoor MAP.(png|pgm|yaml) --out DIR [--seed N] [--iterations N] [--resolution R]
-//          [--robot x,y] [--thresholds ros|bormann] [--semantic-every K] [--semantic-after N]
+//          [--robot x,y] [--thresholds ros|bormann]
 //          [--source-refresh K]
 // See docs/indoor_kit.md.
 #pragma once

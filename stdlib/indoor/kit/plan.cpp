@@ -57,7 +57,8 @@ WeakPriorParams weak_prior(const std::vector<blk::Prior>& priors) {
   double psi1 = 0.0, psi2 = 0.0, tol = std::numeric_limits<double>::infinity();
   for (const auto& p : priors)
     std::visit(Overloaded{[&](const blk::RectPenalty& r) { psi1 += r.psi1; tol = std::min(tol, r.tol); },
-                          [&](const blk::OverlapPenalty& o) { psi2 += o.psi2; }},
+                          [&](const blk::OverlapPenalty& o) { psi2 += o.psi2; },
+                          [](const blk::MlnPrior&) {}},  // the semantic layer's (KitPlan::mln_prior)
                p);
   WeakPriorParams w;
   w.psi1 = factor_of(psi1);
@@ -94,6 +95,9 @@ KitPlan make_plan(const blk::Binding& b) {
     plan.kernels.push_back({&k, kernel_kind(k.move), static_cast<std::size_t>(it - plan.pools.begin())});
   }
   plan.semantic = b.mln.program != nullptr;
+  plan.mln_prior = plan.semantic && std::any_of(b.priors.begin(), b.priors.end(), [](const blk::Prior& p) {
+                     return std::holds_alternative<blk::MlnPrior>(p);
+                   });
   if (plan.semantic) {
     const auto groups = dom::label_groups(b.mln.program(), b.constant_type);
     if (!groups.empty()) plan.type_predicates = groups.front().predicates;

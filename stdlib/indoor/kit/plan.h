@@ -42,6 +42,7 @@ struct KitPlan {
   std::vector<std::int32_t> type_predicates;
   std::vector<bool> lenient;  // per type_predicates entry: the likelihood's lenient_types
   bool semantic = false;      // the binding has a Markov logic program
+  bool mln_prior = false;     // `prior mln`: log Z(evidence(W)) is a term of log p(W)
 };
 
 KernelKind kernel_kind(blocks::Move m);

@@ -1,6 +1,7 @@
 #include "stdlib/indoor/kit/semantic_layer.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "runtime/domain/labels.h"
 
@@ -9,22 +10,43 @@ namespace ksmc::stdlib::indoor::kit {
 namespace dom = runtime::domain;
 
 namespace {
-dom::SemanticOptions options_for(std::uint64_t seed) {
+dom::SemanticOptions options_for(const KitPlan& plan, std::uint64_t seed) {
   dom::SemanticOptions o;
   o.seed = seed;
+  o.log_z = plan.mln_prior;
   return o;
 }
 }  // namespace
 
 SemanticLayer::SemanticLayer(const blocks::Binding& binding, const KitPlan& plan, double resolution,
                              const ClassGrid* map, std::uint64_t seed)
-    : binding_(binding), plan_(plan), resolution_(resolution), map_(map), sem_(binding, options_for(seed)) {}
+    : binding_(binding), plan_(plan), resolution_(resolution), map_(map), sem_(binding, options_for(plan, seed)) {}
 
 SemanticResult SemanticLayer::evaluate(const World& w) {
   const blocks::Scene scene(w, resolution_, map_);
+  return finish(scene, sem_.evaluate(scene, w.units().size()));
+}
+
+SemanticResult SemanticLayer::evaluate(const World& w, const SemanticResult& base, std::span<const UnitId> changed) {
+  const auto units = w.units();
+  const bool same = base.outcome != nullptr && base.ids.size() == units.size() &&
+                    std::equal(units.begin(), units.end(), base.ids.begin(), [](const Unit& u, UnitId id) { return u.id == id; });
+  if (!same) return evaluate(w);
+  std::vector<std::int32_t> idx;
+  const auto enumerated = static_cast<std::int32_t>(sem_.core().enumerated());
+  for (UnitId id : changed) {
+    const auto it = std::lower_bound(base.ids.begin(), base.ids.end(), id);
+    if (it != base.ids.end() && *it == id) idx.push_back(enumerated + static_cast<std::int32_t>(it - base.ids.begin()));
+  }
+  const blocks::Scene scene(w, resolution_, map_);
+  return finish(scene, sem_.update(scene, units.size(), idx, *base.outcome));
+}
+
+SemanticResult SemanticLayer::finish(const blocks::Scene& scene, std::shared_ptr<const dom::Outcome> outcome) {
+  const World& w = scene.world();
   const std::size_t n = w.units().size();
   SemanticResult r;
-  r.outcome = sem_.evaluate(scene, n);
+  r.outcome = std::move(outcome);
   const dom::Outcome& o = *r.outcome;
   for (const Unit& u : w.units()) r.ids.push_back(u.id);
   const std::size_t enumerated = sem_.core().enumerated();  // constants before the units
@@ -56,6 +78,7 @@ SemanticResult SemanticLayer::evaluate(const World& w) {
       const bool holds = std::all_of(cp.conditions.begin(), cp.conditions.end(),
                                      [&](const dom::Condition& cond) { return sem_.core().holds(o, cond, c); });
       if (!holds) continue;
+      r.log_terms += cp.eval(scene, c.data());
       PriorBinding b{p, {}};
       for (std::size_t v = 0; v < c.size(); ++v) {
         const auto k = static_cast<std::size_t>(c[v]);
@@ -65,31 +88,11 @@ SemanticResult SemanticLayer::evaluate(const World& w) {
       r.terms.push_back(std::move(b));
     }
   }
-  return r;
-}
-
-double SemanticLayer::log_prior(const World& w, const std::vector<PriorBinding>& terms) const {
-  if (terms.empty()) return 0.0;
-  const blocks::Scene scene(w, resolution_, map_);
-  const auto units = w.units();
-  const auto enumerated = static_cast<std::int32_t>(sem_.core().enumerated());
-  double lp = 0.0;
-  std::vector<std::int32_t> c;
-  for (const PriorBinding& b : terms) {
-    c.clear();
-    for (std::uint64_t x : b.units) {
-      if (x >= PriorBinding::kConstant) {
-        c.push_back(static_cast<std::int32_t>(x - PriorBinding::kConstant));
-        continue;
-      }
-      const auto id = static_cast<UnitId>(x);
-      const auto it = std::lower_bound(units.begin(), units.end(), id, [](const Unit& u, UnitId v) { return u.id < v; });
-      if (it == units.end() || it->id != id) break;
-      c.push_back(enumerated + static_cast<std::int32_t>(it - units.begin()));
-    }
-    if (c.size() == b.units.size()) lp += binding_.conditional_priors[b.prior].eval(scene, c.data());
+  if (plan_.mln_prior) {
+    const double base = sem_.empty_evidence(n)->log_z;
+    r.log_mln = o.log_z - (std::isfinite(base) ? base : 0.0);
   }
-  return lp;
+  return r;
 }
 
 std::vector<std::string> SemanticLayer::names(const SemanticResult& r) const {

@@ -1,12 +1,17 @@
 // The semantic half of the indoor model (seed §3.8) over the shared evaluator
 // runtime::domain::Semantics: the generated extractors give the evidence of a world, Markov
 // logic gives the marginals (cached by evidence), and from them the unit types (the type
-// group of KitPlan, argmax with ties to the first member) and the bindings of the conditional
-// priors whose conditions hold. The bindings are kept as unit ids, so their terms can be
-// summed on later worlds until the next refresh (IndoorModel).
+// group of KitPlan, argmax with ties to the first member), the bindings of the conditional
+// priors whose conditions hold and the knowledge part of log p(W): the terms of those
+// bindings plus, with `prior mln`, log Z(evidence) - log Z(no evidence atom holds). All of
+// it is a function of the world alone, so the model's target is one fixed posterior; the
+// sampler re-evaluates it on every proposal, re-extracting only the atoms of the units a move
+// touched (IndoorModel).
 #pragma once
 
 #include <cstdint>
+#include <limits>
+#include <span>
 #include <memory>
 #include <string>
 #include <vector>
@@ -36,6 +41,10 @@ struct SemanticResult {
   std::vector<int> type;                        // per unit: index of the most probable type; -1 without types
   std::vector<PriorBinding> terms;              // conditional prior bindings that hold
   std::shared_ptr<const runtime::domain::Outcome> outcome;
+  double log_terms = 0.0;  // Σ of the terms of `terms` on the world
+  double log_mln = 0.0;    // `prior mln`: log Z(evidence) - log Z(no evidence); -inf when impossible
+  bool possible() const { return outcome == nullptr || outcome->possible; }
+  double log_knowledge() const { return possible() ? log_terms + log_mln : -std::numeric_limits<double>::infinity(); }
 };
 
 class SemanticLayer {
@@ -44,8 +53,10 @@ class SemanticLayer {
                 std::uint64_t seed);
 
   SemanticResult evaluate(const World& w);
-  // Σ of the terms of `terms` on `w`; a binding with a unit no longer in `w` adds nothing.
-  double log_prior(const World& w, const std::vector<PriorBinding>& terms) const;
+  // The same, relative to `base` (the result of a world with the same units, ids in the same
+  // order): only atoms with an argument in `changed` are re-extracted. Falls back to a full
+  // evaluation when the unit ids differ.
+  SemanticResult evaluate(const World& w, const SemanticResult& base, std::span<const UnitId> changed);
 
   // The marginal of every ground query atom, units named u<id> ({"Room": {"u3": 0.91}}).
   nlohmann::ordered_json queries_json(const SemanticResult& r) const;
@@ -57,6 +68,7 @@ class SemanticLayer {
 
  private:
   std::vector<std::string> names(const SemanticResult& r) const;
+  SemanticResult finish(const blocks::Scene& scene, std::shared_ptr<const runtime::domain::Outcome> outcome);
 
   const blocks::Binding& binding_;
   const KitPlan& plan_;

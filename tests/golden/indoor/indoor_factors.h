@@ -19,11 +19,14 @@ enum Pred : std::int32_t {
   kPred_HaLi = 2,  // evidence HaLi(unit)
   kPred_MulDoor = 3,  // evidence MulDoor(unit)
   kPred_Adj = 4,  // evidence Adj(unit, unit)
-  kPred_Room = 5,  // query Room(unit)
-  kPred_Corr = 6,  // query Corr(unit)
-  kPred_Hall = 7,  // query Hall(unit)
-  kPred_Other = 8,  // query Other(unit)
-  kPred_SaLe = 9,  // query SaLe(unit, unit)
+  kPred_Thin = 5,  // evidence Thin(unit)
+  kPred_Blocked = 6,  // evidence Blocked(unit)
+  kPred_OpenJoin = 7,  // evidence OpenJoin(unit, unit)
+  kPred_Room = 8,  // query Room(unit)
+  kPred_Corr = 9,  // query Corr(unit)
+  kPred_Hall = 10,  // query Hall(unit)
+  kPred_Other = 11,  // query Other(unit)
+  kPred_SaLe = 12,  // query SaLe(unit, unit)
 };
 
 // The clause program this file was generated from: names, weights, source locations.

@@ -35,9 +35,21 @@ bool extract_Adj(const Scene& s, const std::int32_t* c) {
 bool extract_MulDoor(const Scene& s, const std::int32_t* c) {
   return blk::geom::multi_door(s, s.rect(c[0]), s.segments(), 2);
 }
-// prior for a, b where P(SaLe(a, b)) > 0.5: gaussian(wall_length_diff(unit[a], unit[b]), sigma = 0.3 m);
+// extract Thin(u) = geom.thin(unit[u], min_width = 0.6 m);
+bool extract_Thin(const Scene& s, const std::int32_t* c) {
+  return blk::geom::thin(s, s.rect(c[0]), 0.6);
+}
+// extract Blocked(u) = geom.blocked(unit[u], max_fraction = 0.5);
+bool extract_Blocked(const Scene& s, const std::int32_t* c) {
+  return blk::geom::blocked(s, s.rect(c[0]), 0.5);
+}
+// extract OpenJoin(a, b) = geom.open_join(unit[a], unit[b], dilate = 2 cells, max_gap = 2 m);
+bool extract_OpenJoin(const Scene& s, const std::int32_t* c) {
+  return blk::geom::open_join(s, s.rect(c[0]), s.rect(c[1]), 2.0, 2.0);
+}
+// prior for a, b where P(SaLe(a, b)) > 0.6: gaussian(wall_length_diff(unit[a], unit[b]), sigma = 1 m);
 double prior_SaLe_gaussian(const Scene& s, const std::int32_t* c) {
-  return blk::gaussian(s, blk::wall_length_diff(s, s.rect(c[0]), s.rect(c[1])), 0.3);
+  return blk::gaussian(s, blk::wall_length_diff(s, s.rect(c[0]), s.rect(c[1])), 1.0);
 }
 
 blk::Binding make_binding() {
@@ -51,10 +63,14 @@ blk::Binding make_binding() {
   b.extractors.push_back({kPred_HaLi, &extract_HaLi, "extract HaLi(u) = geom.hall_like(unit[u], big_size = 10 m, big_ratio = 3.0);"});
   b.extractors.push_back({kPred_Adj, &extract_Adj, "extract Adj(a, b) = geom.adjacent(unit[a], unit[b], dilate = 2 cells);"});
   b.extractors.push_back({kPred_MulDoor, &extract_MulDoor, "extract MulDoor(u) = geom.multi_door(unit[u], door, min_doors = 2);"});
+  b.extractors.push_back({kPred_Thin, &extract_Thin, "extract Thin(u) = geom.thin(unit[u], min_width = 0.6 m);"});
+  b.extractors.push_back({kPred_Blocked, &extract_Blocked, "extract Blocked(u) = geom.blocked(unit[u], max_fraction = 0.5);"});
+  b.extractors.push_back({kPred_OpenJoin, &extract_OpenJoin, "extract OpenJoin(a, b) = geom.open_join(unit[a], unit[b], dilate = 2 cells, max_gap = 2 m);"});
   b.priors.push_back(blk::rect_penalty(1.0, 0.08726646259971647));
   b.priors.push_back(blk::overlap_penalty(1.0));
-  b.conditional_priors.push_back({{kType_unit, kType_unit}, {{true, kPred_SaLe, {0, 1}, dom::Cmp::gt, 0.5, false}}, &prior_SaLe_gaussian, "prior for a, b where P(SaLe(a, b)) > 0.5: gaussian(wall_length_diff(unit[a], unit[b]), sigma = 0.3 m);"});
-  b.likelihood = blk::grid::occupancy({{0.8, 0.1, 0.1}, {0.1, 0.8, 0.1}, {0.1, 0.1, 0.8}}, {kPred_Room, kPred_Hall}, {{0.6, 0.3, 0.1}, {0.2, 0.6, 0.2}, {0.1, 0.3, 0.6}});
+  b.priors.push_back(blk::mln());
+  b.conditional_priors.push_back({{kType_unit, kType_unit}, {{true, kPred_SaLe, {0, 1}, dom::Cmp::gt, 0.6, false}}, &prior_SaLe_gaussian, "prior for a, b where P(SaLe(a, b)) > 0.6: gaussian(wall_length_diff(unit[a], unit[b]), sigma = 1 m);"});
+  b.likelihood = blk::grid::occupancy({{0.8, 0.1, 0.1}, {0.1, 0.8, 0.1}, {0.1, 0.1, 0.8}}, {kPred_Room, kPred_Hall}, {{0.8, 0.1, 0.1}, {0.1, 0.8, 0.1}, {0.1, 0.1, 0.8}});
   b.kernels.push_back({"ADD", "REMOVE", blk::Move::birth, {blk::detect::wbu(1.5, 200), blk::detect::fsu(4000, 100), blk::detect::rpb(1.0)}, "kernel pair ADD / REMOVE = detect.wbu(min_size = 1.5 m), detect.fsu(after = 4000), detect.rpb(min_size = 1 m);"});
   b.kernels.push_back({"REMOVE", "ADD", blk::Move::death, b.kernels.back().sources, "kernel pair ADD / REMOVE = detect.wbu(min_size = 1.5 m), detect.fsu(after = 4000), detect.rpb(min_size = 1 m);"});
   b.kernels.push_back({"SPLIT", "MERGE", blk::Move::split, {blk::detect::split_lines(20, 0.03490658503988659), blk::partner::inverse_distance()}, "kernel pair SPLIT / MERGE = detect.split_lines(min_votes = 20), partner.inverse_distance();"});
