@@ -163,7 +163,7 @@ ChainResult Engine::run_chain(unsigned chain, const EngineConfig& cfg, Monitor& 
     if (p.was_declined()) {
       ++stats.declined;
     } else {
-      if (std::isnan(p.log_q_fwd) || std::isnan(p.log_q_bwd)) {
+      if (std::isnan(p.log_q_fwd) || std::isnan(p.log_q_bwd) || std::isnan(p.log_screened)) {
         model->reject();
         throw std::runtime_error(fmt::format("kernel '{}' returned a NaN proposal density at iteration {}",
                                              kernels[k]->name(), done));
@@ -178,7 +178,7 @@ ChainResult Engine::run_chain(unsigned chain, const EngineConfig& cfg, Monitor& 
         accept = true;   // leaving an impossible initial state
       } else {
         const double log_alpha = (new_lp - lp) + (p.log_q_bwd - p.log_q_fwd) +
-                                 schedule_.log_selection_ratio(row, k);
+                                 schedule_.log_selection_ratio(row, k) - p.log_screened;
         accept = log_alpha >= 0.0 || std::log(rng.uniform_pos()) < log_alpha;
       }
       if (accept) {

@@ -66,9 +66,15 @@ struct Proposal {
   Status status = Status::declined;
   double log_q_fwd = 0.0;  // log Q(M'|M), given that this kernel was selected
   double log_q_bwd = 0.0;  // log Q(M|M'), given that the reverse kernel was selected
+  // Delayed acceptance (Christen & Fox 2005): a model may first test the proposal against a
+  // cheap part of its posterior, with a log ratio r1 that changes sign for the reverse move
+  // (e.g. Δ cheap log posterior + log_q_bwd - log_q_fwd), and decline it when that test fails.
+  // A proposal that passed reports r1 here; the engine's test is then the second stage,
+  // log α - r1 (for a posterior = cheap part x expensive part: the expensive part's ratio).
+  double log_screened = 0.0;
 
-  static Proposal made(double log_q_fwd, double log_q_bwd) {
-    return Proposal{Status::proposed, log_q_fwd, log_q_bwd};
+  static Proposal made(double log_q_fwd, double log_q_bwd, double log_screened = 0.0) {
+    return Proposal{Status::proposed, log_q_fwd, log_q_bwd, log_screened};
   }
   // The kernel cannot apply here (e.g. MERGE with a single unit). The model must be
   // left untouched; the engine counts it as a rejection.

@@ -42,9 +42,9 @@ TEST_CASE("the binding of indoor.ksm gives the kit's plan", "[indoor_kit]") {
   // Tables in the enum order of likelihood.h: [predicted][observed], Free 0, Unknown 1, Wall 2.
   REQUIRE(p.tables.size() == 2);
   CHECK(p.tables[0].p[2][2] == 0.8);  // wall predicted, occupied observed
-  CHECK(p.tables[1].p[2][1] == 0.1);   // lenient_lut row 0 (wall), column 1 (unknown)
-  CHECK(p.tables[1].p[0][1] == 0.01);  // lenient_lut row 2 (free), column 1
-  CHECK(p.tables[1].p[0][2] == 0.19);  // lenient_lut row 2 (free), column 0 (occupied): furniture
+  CHECK(p.tables[1].p[2][1] == 0.1);  // lenient_lut row 0 (wall), column 1 (unknown)
+  CHECK(p.tables[1].p[0][1] == 0.1);  // lenient_lut row 2 (free), column 1: equal to lut (indoor.ksm)
+  CHECK(p.type_free_likelihood);      // so the tables do not depend on the types
   CHECK(p.prior.psi1 == Approx(std::exp(-1.0)));
   CHECK(p.prior.psi2 == Approx(std::exp(-1.0)));
   CHECK(p.prior.angle_tolerance == Approx(5.0 * 3.14159265358979323846 / 180.0));

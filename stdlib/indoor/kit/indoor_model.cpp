@@ -15,6 +15,10 @@ namespace ksmc::stdlib::indoor::kit {
 
 namespace mcmc = runtime::mcmc;
 
+// Delayed acceptance: the first stage passes every proposal whose cheap log ratio is above
+// -kScreenMargin (nats), so only clearly worse proposals are screened out.
+constexpr double kScreenMargin = 10.0;
+
 // The run-time state of one source pool: its candidates (refreshed every source_refresh
 // proposals), caches and the KernelSet its kernels propose with.
 struct IndoorModel::Pool {
@@ -121,6 +125,7 @@ void IndoorModel::refresh_sources() {
 
 std::vector<UnitChange> IndoorModel::relabel(const SemanticResult& r) const {
   std::vector<UnitChange> out;
+  if (in_->plan.type_free_likelihood) return out;  // the tables are equal: nothing to switch
   for (std::size_t i = 0; i < r.ids.size(); ++i) {
     const int type = r.type[i];
     const bool lenient = type >= 0 && in_->plan.lenient[static_cast<std::size_t>(type)];
@@ -152,7 +157,8 @@ std::optional<Move> IndoorModel::adopt(SemanticResult r, KernelKind kind) {
   return applied;
 }
 
-bool IndoorModel::propose(std::size_t kernel, mcmc::Rng& rng, double& log_q_fwd, double& log_q_bwd) {
+bool IndoorModel::propose(std::size_t kernel, mcmc::Rng& rng, double& log_q_fwd, double& log_q_bwd,
+                          double& log_screened) {
   if (pending_) throw std::logic_error("IndoorModel: propose() before the previous proposal ended");
   const KernelPlan& kp = in_->plan.kernels[kernel];
   const KernelKind k = kp.kind;
@@ -166,9 +172,29 @@ bool IndoorModel::propose(std::size_t kernel, mcmc::Rng& rng, double& log_q_fwd,
   auto p = pools_[kp.pool]->ks->propose(k, sw_.world(), krng_);
   if (!p) return false;  // declined: untouched
   Pending pend;
+  const double cheap_before = sw_.log_likelihood() + sw_.log_prior();
   // Previewed when possible: a rejection then costs no revert (see ScoredWorld::preview).
   pend.previewed = sw_.preview(p->move);
   if (!pend.previewed) sw_.apply(p->move);
+  log_screened = 0.0;
+  if (sem_ && in_->plan.type_free_likelihood) {
+    // Delayed acceptance, first stage, on the likelihood and weak prior alone (they do not
+    // depend on the types here): r1 is their log MH ratio, which changes sign for the reverse
+    // move. The first stage accepts with α1(x→y) = min(1, r1 e^m): a proposal within m nats
+    // of the current cheap value always passes, so good moves keep the plain MH test; a
+    // clearly worse one is declined before the knowledge part is computed. The engine's
+    // second stage divides by α1(x→y) / α1(y→x) (Proposal::log_screened).
+    const double r1 = (sw_.log_likelihood() + sw_.log_prior() - cheap_before) + (p->log_q_bwd - p->log_q_fwd);
+    const double fwd = std::min(0.0, r1 + kScreenMargin), bwd = std::min(0.0, kScreenMargin - r1);
+    const double u = (static_cast<double>(krng_() >> 11) + 0.5) * 0x1.0p-53;
+    if (!(fwd >= 0.0) && !(std::log(u) < fwd)) {
+      if (pend.previewed) sw_.discard();
+      else sw_.revert(p->move);
+      ++screened_out_;
+      return false;
+    }
+    log_screened = fwd - bwd;
+  }
   if (sem_) {
     // The knowledge part of log p(W') on the proposed world: the units the move touched
     // (directly or through a door) are the constants whose evidence may have changed.

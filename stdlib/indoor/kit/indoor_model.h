@@ -9,6 +9,10 @@
 // the units the move touched are re-extracted, inference is recalled from the evidence cache
 // or run exactly (runtime/mln, per component), units whose type changed switch tables inside
 // the same proposal. A world whose evidence violates a hard rule has probability 0.
+// When the tables do not depend on the types (KitPlan::type_free_likelihood) a proposal is
+// first tested on the likelihood and weak prior alone (delayed acceptance, Christen & Fox
+// 2005: runtime/mcmc Proposal::log_screened); only the proposals that pass it pay for the
+// knowledge part, whose ratio the engine then tests. The chain's target is unchanged.
 #pragma once
 
 #include <cstdint>
@@ -62,7 +66,10 @@ class IndoorModel final : public runtime::mcmc::Model {
 
   // One proposal of the kernel declared `kernel`-th (KitPlan::kernels; called by the kernel
   // adapters). false: declined, untouched.
-  bool propose(std::size_t kernel, runtime::mcmc::Rng& rng, double& log_q_fwd, double& log_q_bwd);
+  // log_screened: the first stage's log ratio when the proposal passed it (else 0).
+  bool propose(std::size_t kernel, runtime::mcmc::Rng& rng, double& log_q_fwd, double& log_q_bwd, double& log_screened);
+  // Proposals declined by the first stage of delayed acceptance so far.
+  std::uint64_t screened_out() const { return screened_out_; }
 
   const ScoredWorld& scored() const { return sw_; }
   const SharedInput& input() const { return *in_; }
@@ -86,6 +93,7 @@ class IndoorModel final : public runtime::mcmc::Model {
   std::mt19937_64 krng_;
   bool krng_seeded_ = false;
   std::uint64_t iteration_ = 0;
+  std::uint64_t screened_out_ = 0;
   std::optional<SemanticResult> current_;  // semantics of the current world
   double knowledge_ = 0.0;                 // current_->log_knowledge()
   // Pending proposal.
@@ -106,9 +114,9 @@ class IndoorKernel final : public runtime::mcmc::NamedKernel<IndoorModel> {
 
  protected:
   runtime::mcmc::Proposal propose_typed(IndoorModel& m, runtime::mcmc::Rng& rng) const override {
-    double f = 0.0, b = 0.0;
-    if (!m.propose(index_, rng, f, b)) return runtime::mcmc::Proposal::declined();
-    return runtime::mcmc::Proposal::made(f, b);
+    double f = 0.0, b = 0.0, screened = 0.0;
+    if (!m.propose(index_, rng, f, b, screened)) return runtime::mcmc::Proposal::declined();
+    return runtime::mcmc::Proposal::made(f, b, screened);
   }
 
  private:

@@ -105,6 +105,8 @@ KitPlan make_plan(const blk::Binding& b) {
       plan.lenient.push_back(std::find(b.likelihood.lenient_types.begin(), b.likelihood.lenient_types.end(), q) !=
                              b.likelihood.lenient_types.end());
   }
+  const bool any_lenient = std::find(plan.lenient.begin(), plan.lenient.end(), true) != plan.lenient.end();
+  plan.type_free_likelihood = !any_lenient || b.likelihood.lenient_lut == b.likelihood.lut;
   return plan;
 }
 

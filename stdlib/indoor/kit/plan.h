@@ -43,6 +43,10 @@ struct KitPlan {
   std::vector<bool> lenient;  // per type_predicates entry: the likelihood's lenient_types
   bool semantic = false;      // the binding has a Markov logic program
   bool mln_prior = false;     // `prior mln`: log Z(evidence(W)) is a term of log p(W)
+  // The tables do not depend on the unit types (no lenient type, or a lenient table equal to
+  // the default): the likelihood and weak prior are then a function of the geometry alone and
+  // a cheap first stage of delayed acceptance (IndoorModel).
+  bool type_free_likelihood = true;
 };
 
 KernelKind kernel_kind(blocks::Move m);
