@@ -67,6 +67,9 @@ io::WorldResult make_result(IndoorModel& m, const io::OccupancyMap& map, const s
   if (sem) {
     r.types = m.semantics()->type_names();
     r.queries = m.semantics()->queries_json(*sem);
+    // Conditional prior bindings (e.g. SaLe pairs) and those more than 2 sd off (violations).
+    r.metrics["conditional_bindings"] = static_cast<double>(sem->terms.size());
+    r.metrics["conditional_beyond_2sd"] = static_cast<double>(sem->strained);
   }
   for (std::size_t i = 0; i < w.units().size(); ++i) {
     const Unit& u = w.units()[i];

@@ -78,7 +78,9 @@ SemanticResult SemanticLayer::finish(const blocks::Scene& scene, std::shared_ptr
       const bool holds = std::all_of(cp.conditions.begin(), cp.conditions.end(),
                                      [&](const dom::Condition& cond) { return sem_.core().holds(o, cond, c); });
       if (!holds) continue;
-      r.log_terms += cp.eval(scene, c.data());
+      const double term = cp.eval(scene, c.data());
+      r.log_terms += term;
+      r.strained += term < -2.0 ? 1 : 0;
       PriorBinding b{p, {}};
       for (std::size_t v = 0; v < c.size(); ++v) {
         const auto k = static_cast<std::size_t>(c[v]);

@@ -42,6 +42,7 @@ struct SemanticResult {
   std::vector<PriorBinding> terms;              // conditional prior bindings that hold
   std::shared_ptr<const runtime::domain::Outcome> outcome;
   double log_terms = 0.0;  // Σ of the terms of `terms` on the world
+  std::size_t strained = 0;  // bindings whose term is below -2 (beyond 2 sd for a gaussian)
   double log_mln = 0.0;    // `prior mln`: log Z(evidence) - log Z(no evidence); -inf when impossible
   bool possible() const { return outcome == nullptr || outcome->possible; }
   double log_knowledge() const { return possible() ? log_terms + log_mln : -std::numeric_limits<double>::infinity(); }
