@@ -5,6 +5,7 @@
 #include <system_error>
 
 #include "stdlib/indoor/io/scene_dot.h"
+#include "stdlib/indoor/io/segmentation.h"
 #include "stdlib/indoor/io/trace_plot.h"
 #include "stdlib/indoor/io/world_images.h"
 #include "stdlib/indoor/io/world_json.h"
@@ -22,10 +23,11 @@ WorldFiles write_world_outputs(const std::filesystem::path& dir, const Occupancy
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw std::runtime_error(dir.string() + ": cannot create output folder: " + ec.message());
-  WorldFiles f{dir / "world.json", dir / "labels.png", dir / "overlay.png", dir / "trace.png",
+  WorldFiles f{dir / "world.json", dir / "labels.png", dir / "segmentation.png", dir / "overlay.png", dir / "trace.png",
                dir / "scene.dot"};
   write_world_json(f.world_json, w);
   write_labels_png(f.labels_png, w, map.rows(), map.cols());
+  write_segmentation_png(f.segmentation_png, map.grid, w);
   write_overlay_png(f.overlay_png, map.grid, w);
   write_trace_png(f.trace_png, w.trace);
   write_scene_dot(f.scene_dot, w);

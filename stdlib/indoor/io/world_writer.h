@@ -1,5 +1,5 @@
-// Writes the whole indoor result into a folder: world.json, labels.png, overlay.png, trace.png,
-// scene.dot — each atomically; identical input gives byte-identical files.
+// Writes the whole indoor result into a folder: world.json, labels.png, segmentation.png,
+// overlay.png, trace.png, scene.dot — each atomically; identical input gives byte-identical files.
 #pragma once
 
 #include <filesystem>
@@ -10,7 +10,7 @@
 namespace ksmc::stdlib::indoor::io {
 
 struct WorldFiles {
-  std::filesystem::path world_json, labels_png, overlay_png, trace_png, scene_dot;
+  std::filesystem::path world_json, labels_png, segmentation_png, overlay_png, trace_png, scene_dot;
 };
 
 // `dir` is created if missing. The map must have the size recorded in w.map (width x height).
