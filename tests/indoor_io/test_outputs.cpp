@@ -58,6 +58,7 @@ cv::Mat1b predict(const WorldResult& w, int rows, int cols) {
 WorldResult sample_result(const OccupancyMap& map) {
   WorldResult w = make_sim_office().truth;
   w.map = map_info_of(map, "sim_office.yaml");
+  w.types = {"room", "corridor", "hall", "other"};
   w.units[4].type_probs = {{"corridor", 0.91}, {"hall", 0.05}, {"room", 0.03}, {"other", 0.01}};
   w.doors.push_back(DoorResult{9, 6, 0, {Point2{20, 300}, Point2{20, 317}}});  // to the outside
   for (int i = 0; i <= 5000; i += 50) {
@@ -159,7 +160,7 @@ TEST_CASE("world outputs decode back to what was written") {
     // Key order follows DESIGN §7.
     std::vector<std::string> keys;
     for (auto it = j.begin(); it != j.end(); ++it) keys.push_back(it.key());
-    CHECK(keys == std::vector<std::string>{"adjacent", "doors", "map", "metrics", "units"});  // nlohmann::json sorts
+    CHECK(keys == std::vector<std::string>{"adjacent", "doors", "map", "metrics", "types", "units"});  // nlohmann::json sorts
     const std::string text = read_all(f.world_json);
     CHECK(text.find("\"map\"") < text.find("\"units\""));
     CHECK(text.find("\"units\"") < text.find("\"doors\""));
@@ -181,21 +182,30 @@ TEST_CASE("world outputs decode back to what was written") {
     cv::minMaxLoc(l, &lo, &hi);
     CHECK(hi == 8);
   }
-  SECTION("overlay.png: upscaled, greys, blue walls, cyan doors") {
+  SECTION("overlay.png: upscaled, greys, type fills, blue walls, cyan doors, topology, legend") {
     const cv::Mat3b o = cv::imread(f.overlay_png.string(), cv::IMREAD_COLOR);
     const int s = overlay_scale(400, 600);
     CHECK(s == 2);
-    REQUIRE(o.rows == 800);
+    REQUIRE(o.rows > 800);                                      // the legend band below the map
     REQUIRE(o.cols == 1200);
     CHECK(o(5, 5) == cv::Vec3b(190, 190, 190));                 // unknown outside
-    CHECK(o(2 * 100, 2 * 60) == cv::Vec3b(255, 255, 255));      // free inside room 1
+    // Free inside room 1: white under the translucent fill of the first type (241, 194, 50).
+    CHECK(o(2 * 100, 2 * 60) == cv::Vec3b(163, 228, 249));
     CHECK(o(2 * 100 + 1, 2 * 150 + 1) == cv::Vec3b(255, 0, 0));  // the wall x = 150 is blue
-    CHECK(o(2 * 170 + 1, 2 * 68 + 1) == cv::Vec3b(255, 255, 0)); // door 1 is cyan
-    // The id text is drawn near unit 1's centre (85, 100): dark pixels on the white room.
+    CHECK(o(2 * 170 + 1, 2 * 62 + 1) == cv::Vec3b(255, 255, 0)); // door 1 is cyan
+    CHECK(o(2 * 170 + 1, 2 * 68 + 1) == cv::Vec3b(40, 40, 200)); // its midpoint is a topology node
+    // A topology line runs from unit 1's centre (85, 100) to door 1's midpoint (68.5, 170).
+    const cv::Vec3b on_line = o(2 * 135, 2 * 77);
+    CHECK(on_line[2] > on_line[0] + 50);
+    // The type letter and id (R1) is drawn near unit 1's centre: dark pixels on the light room.
     const cv::Mat3b patch = o(cv::Rect(2 * 85 - 20, 2 * 100 - 20, 40, 40));
     cv::Mat1b dark;
     cv::inRange(patch, cv::Scalar(0, 0, 0), cv::Scalar(200, 100, 60), dark);
     CHECK(cv::countNonZero(dark) > 20);
+    // The legend: one swatch per type in the band, the first in the first type's colour.
+    cv::Mat1b swatch;
+    cv::inRange(o(cv::Rect(0, 800, 1200, o.rows - 800)), cv::Scalar(50, 194, 241), cv::Scalar(50, 194, 241), swatch);
+    CHECK(cv::countNonZero(swatch) > 50);
   }
   SECTION("trace.png: two panels with curves") {
     const cv::Mat3b t = cv::imread(f.trace_png.string(), cv::IMREAD_COLOR);

@@ -65,7 +65,15 @@ struct WorldResult {
   // (units named u<id>; runtime::domain::Semantics::queries_json). Written as "queries", in
   // its own order, when it is an object.
   nlohmann::ordered_json queries;
+  // A route (--path) as a polyline in cell coordinates, drawn on overlay.png; empty = none.
+  std::vector<Point2> route;
 };
+
+// The centre of a unit: the mean of its corners.
+inline Point2 unit_centre(const UnitResult& u) {
+  return {(u.corners[0].x + u.corners[1].x + u.corners[2].x + u.corners[3].x) / 4.0,
+          (u.corners[0].y + u.corners[1].y + u.corners[2].y + u.corners[3].y) / 4.0};
+}
 
 // Fills map info (size, resolution, origin, counts) from a loaded map; `source` is written
 // verbatim, so pass a relative path or file name for reproducible output.
