@@ -1,4 +1,4 @@
-// Result outputs: world.json, labels.png, overlay.png, trace.png and scene.dot decode back to what
+// Result outputs: world.json, labels.png, overlay.png, trace.png and graph.dot/png decode back to what
 // was written, are byte-identical across runs, and reject inconsistent results. Also the cell
 // prediction rate (eq. 3.39) and the committed simulated example map.
 #include <catch2/catch.hpp>
@@ -14,7 +14,7 @@
 
 #include "stdlib/indoor/io/map_loader.h"
 #include "stdlib/indoor/io/prediction_rate.h"
-#include "stdlib/indoor/io/scene_dot.h"
+#include "stdlib/indoor/io/graph_dot.h"
 #include "stdlib/indoor/io/sim_floor_plan.h"
 #include "stdlib/indoor/io/trace_plot.h"
 #include "stdlib/indoor/io/world_images.h"
@@ -217,21 +217,37 @@ TEST_CASE("world outputs decode back to what was written") {
     CHECK(cv::countNonZero(blue) > 500);
     CHECK(cv::countNonZero(red) > 500);
   }
-  SECTION("scene.dot") {
-    const std::string d = read_all(f.scene_dot);
-    CHECK(d.rfind("graph scene {", 0) == 0);
-    CHECK(d.find("u5 [label=\"5\\ncorridor (0.91)\"") != std::string::npos);
-    CHECK(d.find("u1 -- u2 [color=\"grey50\", style=dashed];") != std::string::npos);
-    CHECK(d.find("u1 -- u5 [style=bold") != std::string::npos);
-    CHECK(d.find("u6 -- outside [style=bold") != std::string::npos);
+  SECTION("graph.dot and graph.png") {
+    const std::string d = read_all(f.graph_dot);
+    CHECK(d.rfind("graph topology {", 0) == 0);
+    // Type letter + id from the run's types (room, corridor, hall, other -> R, C, H, O).
+    CHECK(d.find("u5 [label=\"C5\", tooltip=\"corridor 0.91\"") != std::string::npos);
+    CHECK(d.find("u1 [label=\"R1\"") != std::string::npos);
+    CHECK(d.find("u1 -- u2 [style=dashed") != std::string::npos);
+    CHECK(d.find("u1 -- u5 [style=solid") != std::string::npos);
+    CHECK(d.find("u6 -- outside [style=solid") != std::string::npos);
     if (std::system("dot -V >/dev/null 2>&1") == 0) {
-      const std::string cmd = "dot -Tsvg '" + f.scene_dot.string() + "' -o '" +
-                              (dir / "scene.svg").string() + "' 2>/dev/null";
-      CHECK(std::system(cmd.c_str()) == 0);
+      CHECK(f.graph_png_skipped.empty());
+      const cv::Mat g = cv::imread(f.graph_png.string(), cv::IMREAD_COLOR);
+      CHECK(g.cols > 50);
     } else {
-      std::printf("SKIP: graphviz 'dot' not found, scene.dot syntax not checked by dot\n");
+      CHECK(f.graph_png_skipped.find("not found") != std::string::npos);
+      CHECK(!fs::exists(f.graph_png));
+      std::printf("SKIP: graphviz 'dot' not found, graph.png not checked\n");
     }
   }
+}
+
+TEST_CASE("graph.dot letters come from the run's type names") {
+  WorldResult w;
+  w.types = {"Kitchen", "Corridor", "Kiosk"};  // a domain that renamed its types
+  w.units = {UnitResult{1, "Kitchen", {}, {}}, UnitResult{2, "Corridor", {}, {}}, UnitResult{3, "Kiosk", {}, {}},
+             UnitResult{4, "", {}, {}}};
+  const std::string d = graph_dot_text(w);
+  CHECK(d.find("u1 [label=\"Kit") != std::string::npos);  // Kitchen / Kiosk share "K", "Ki"
+  CHECK(d.find("u2 [label=\"C2\"") != std::string::npos);
+  CHECK(d.find("u3 [label=\"Kio3\"") != std::string::npos);
+  CHECK(d.find("u4 [label=\"4\", tooltip=\"untyped\"") != std::string::npos);
 }
 
 TEST_CASE("outputs are byte-identical across runs") {
@@ -242,11 +258,12 @@ TEST_CASE("outputs are byte-identical across runs") {
   const WorldFiles b = write_world_outputs(dir / "b", map, sample_result(map));
   for (const auto& [x, y] : {std::pair{a.world_json, b.world_json}, {a.labels_png, b.labels_png},
                              {a.overlay_png, b.overlay_png}, {a.trace_png, b.trace_png},
-                             {a.scene_dot, b.scene_dot}}) {
+                             {a.graph_dot, b.graph_dot}, {a.segmentation_png, b.segmentation_png}}) {
     INFO(x.filename().string());
     CHECK(read_all(x) == read_all(y));
     CHECK(!read_all(x).empty());
   }
+  if (a.graph_png_skipped.empty()) CHECK(read_all(a.graph_png) == read_all(b.graph_png));
 }
 
 TEST_CASE("inconsistent results are refused before writing") {

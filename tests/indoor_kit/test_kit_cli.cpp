@@ -74,7 +74,7 @@ TEST_CASE("indoor-dev: the simulated office against its truth", "[indoor_kit][cl
   const Outcome o = run_dev((src / "sim_office.yaml").string() + " --out " + out.string() + " --seed 1 --iterations 20000", d);
   INFO(o.err);
   REQUIRE(o.code == 0);
-  for (const char* f : {"world.json", "labels.png", "overlay.png", "trace.png", "scene.dot", "summary.json"})
+  for (const char* f : {"world.json", "labels.png", "segmentation.png", "overlay.png", "trace.png", "graph.dot", "summary.json"})
     CHECK(fs::exists(out / f));
   const auto result = ksmc::stdlib::indoor::io::read_world_json(out / "world.json");
   const auto truth = ksmc::stdlib::indoor::io::read_world_json(src / "sim_office_truth.json");
@@ -102,7 +102,11 @@ TEST_CASE("indoor-dev: the simulated office against its truth", "[indoor_kit][cl
     CHECK(total == Approx(1.0).epsilon(0.02));
     CHECK(world.at("queries").at(u.at("type").get<std::string>()).contains("u" + std::to_string(u.at("id").get<int>())));
   }
-  std::ifstream dot(out / "scene.dot");
+  std::ifstream dot(out / "graph.dot");
   const std::string dot_text((std::istreambuf_iterator<char>(dot)), std::istreambuf_iterator<char>());
-  CHECK(dot_text.find("(0.00)") == std::string::npos);  // the label shows the unit's own type probability
+  // Every typed node is labelled with its type's letter and its id (R12, C3, H7, O9).
+  for (const auto& u : world.at("units")) {
+    const std::string label = "label=\"" + u.at("type").get<std::string>().substr(0, 1) + std::to_string(u.at("id").get<int>()) + "\"";
+    CHECK(dot_text.find(label) != std::string::npos);
+  }
 }

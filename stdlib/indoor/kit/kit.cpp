@@ -234,7 +234,8 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
   const std::string source = path.filename().string();
   setup.write_results = [map, source](const mcmc::RunResult& run, mcmc::Model& best, cli::OutputDir& out) {
     auto& m = static_cast<IndoorModel&>(best);
-    io::write_world_outputs(out.dir(), *map, make_result(m, *map, source, run));
+    const io::WorldFiles files = io::write_world_outputs(out.dir(), *map, make_result(m, *map, source, run));
+    if (!files.graph_png_skipped.empty()) std::fprintf(stderr, "indoor: %s\n", files.graph_png_skipped.c_str());
   };
   nlohmann::json extra = nlohmann::json::object();
   extra["map"] = {{"rows", map->rows()}, {"cols", map->cols()}, {"resolution", res},
