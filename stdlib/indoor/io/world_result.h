@@ -49,6 +49,12 @@ struct TraceSample {
   double acceptance_rate = 0.0;      // in [0, 1], e.g. over a sliding window
 };
 
+// One stored posterior sample (the chain's accepted state at that iteration): its unit rectangles.
+struct PosteriorWorld {
+  std::int64_t iteration = 0;
+  std::vector<std::array<Point2, 4>> units;
+};
+
 struct WorldResult {
   MapInfo map;
   std::vector<UnitResult> units;
@@ -65,6 +71,11 @@ struct WorldResult {
   // (units named u<id>; runtime::domain::Semantics::queries_json). Written as "queries", in
   // its own order, when it is an object.
   nlohmann::ordered_json queries;
+  // Stored posterior samples, oldest first, for posterior.png; empty (no samples stored, i.e.
+  // no --samples) = no posterior.png.
+  std::vector<PosteriorWorld> posterior;
+  // Width of the wall band the model predicts inside each unit edge (cells), for world.obj.
+  double wall_thickness = 1.0;
   // A route (--path) as a polyline in cell coordinates, drawn on overlay.png; empty = none.
   std::vector<Point2> route;
 };

@@ -14,6 +14,7 @@
 #include "stdlib/indoor/detect/rpb.h"
 #include "stdlib/indoor/detect/wbu.h"
 #include "stdlib/indoor/io/map_loader.h"
+#include "stdlib/indoor/io/posterior_plot.h"
 #include "stdlib/indoor/io/world_writer.h"
 #include "stdlib/indoor/kit/indoor_model.h"
 #include "stdlib/indoor/kit/solid_interior.h"
@@ -62,6 +63,7 @@ io::WorldResult make_result(IndoorModel& m, const io::OccupancyMap& map, const s
                             const mcmc::RunResult& run) {
   io::WorldResult r;
   r.map = io::map_info_of(map, source);
+  r.wall_thickness = m.scored().params().raster.wall_thickness;
   const World& w = m.scored().world();
   const auto sem = m.final_semantics();
   if (sem) {
@@ -105,6 +107,24 @@ io::WorldResult make_result(IndoorModel& m, const io::OccupancyMap& map, const s
     r.trace.push_back({static_cast<std::int64_t>(c.iterations), c.final_log_posterior, c.iterations ? static_cast<double>(c.accepted()) / static_cast<double>(c.iterations) : 0.0});
   }
   return r;
+}
+
+// The unit rectangles of the last stored posterior samples of the best chain (--samples), for
+// posterior.png: each sample is restored into `m` (the model's own reading of its snapshot), then
+// `m` goes back to the best state.
+std::vector<io::PosteriorWorld> posterior_worlds(IndoorModel& m, const mcmc::RunResult& run) {
+  std::vector<io::PosteriorWorld> out;
+  const auto& samples = run.best().samples;
+  if (samples.empty()) return out;
+  const std::size_t first = samples.size() > io::kPosteriorMaxDrawn ? samples.size() - io::kPosteriorMaxDrawn : 0;
+  for (std::size_t i = first; i < samples.size(); ++i) {
+    m.restore(samples[i].state);
+    auto& pw = out.emplace_back();
+    pw.iteration = static_cast<std::int64_t>(samples[i].iteration);
+    for (const Unit& u : m.scored().world().units()) pw.units.push_back(u.rect.corners());
+  }
+  m.restore(run.best().best_state);
+  return out;
 }
 
 // Fixed unit candidates of each pool (WBU, and RPB with --robot) and the FSU frame.
@@ -234,7 +254,9 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
   const std::string source = path.filename().string();
   setup.write_results = [map, source](const mcmc::RunResult& run, mcmc::Model& best, cli::OutputDir& out) {
     auto& m = static_cast<IndoorModel&>(best);
-    const io::WorldFiles files = io::write_world_outputs(out.dir(), *map, make_result(m, *map, source, run));
+    io::WorldResult result = make_result(m, *map, source, run);
+    result.posterior = posterior_worlds(m, run);
+    const io::WorldFiles files = io::write_world_outputs(out.dir(), *map, result);
     if (!files.graph_png_skipped.empty()) std::fprintf(stderr, "indoor: %s\n", files.graph_png_skipped.c_str());
   };
   nlohmann::json extra = nlohmann::json::object();
