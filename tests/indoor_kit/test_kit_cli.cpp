@@ -2,6 +2,7 @@
 // non-zero exit and no output folder; the simulated office map is explained against its truth.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -109,4 +110,36 @@ TEST_CASE("indoor-dev: the simulated office against its truth", "[indoor_kit][cl
     const std::string label = "label=\"" + u.at("type").get<std::string>().substr(0, 1) + std::to_string(u.at("id").get<int>()) + "\"";
     CHECK(dot_text.find(label) != std::string::npos);
   }
+}
+
+TEST_CASE("indoor-dev: --path, --samples and the map-reader outputs", "[indoor_kit][cli]") {
+  const fs::path src = fs::path(KSMC_SOURCE_DIR) / "examples/indoor";
+  const fs::path d = temp_dir("cli_path");
+  const std::string map = (src / "sim_office.yaml").string() + " --seed 1 --iterations 3000";
+  // Two points in the top-left room (metres, map frame): a route inside one unit.
+  const Outcome o = run_dev(map + " --out " + (d / "a").string() + " --samples 20 --path 4.25,14.5 5.5,12", d);
+  INFO(o.err);
+  REQUIRE(o.code == 0);
+  for (const char* f : {"segmentation.png", "world.obj", "posterior.png", "path.json"}) CHECK(fs::exists(d / "a" / f));
+  const auto path = nlohmann::json::parse(std::ifstream(d / "a" / "path.json"));
+  CHECK(path.at("found") == true);
+  CHECK(path.at("units").size() == 1);
+  CHECK(path.at("waypoints_m").front() == nlohmann::json::array({4.25, 14.5}));
+  const auto summary = nlohmann::json::parse(std::ifstream(d / "a" / "summary.json"));
+  std::vector<std::string> listed;
+  for (const auto& f : summary.at("outputs")) listed.push_back(f.at("path").get<std::string>());
+  for (const char* f : {"segmentation.png", "world.obj", "posterior.png", "path.json"})
+    CHECK(std::find(listed.begin(), listed.end(), f) != listed.end());
+  // Without --samples there is no posterior.png (nothing to draw).
+  const Outcome n = run_dev(map + " --out " + (d / "b").string() + " --path 29.2,17 4.25,14.5", d);
+  CHECK(n.code == 0);
+  CHECK(!fs::exists(d / "b" / "posterior.png"));
+  // A start in no unit (the grey area right of the top rooms): the error is printed and in path.json.
+  CHECK_THAT(n.err, Catch::Contains("--path: the start is outside every unit"));
+  CHECK(nlohmann::json::parse(std::ifstream(d / "b" / "path.json")).at("found") == false);
+  // Outside the map: a usage error before sampling.
+  const Outcome u = run_dev(map + " --out " + (d / "c").string() + " --path 4.25,14.5 45,5", d);
+  CHECK(u.code == 2);
+  CHECK_THAT(u.err, Catch::Contains("--path 45,5: outside the map"));
+  CHECK(!fs::exists(d / "c"));
 }

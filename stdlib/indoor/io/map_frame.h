@@ -31,5 +31,6 @@ struct MapFrame {
 };
 
 inline MapFrame frame_of(const MapInfo& m) { return {m.resolution, m.origin, m.height}; }
+inline MapFrame frame_of(const OccupancyMap& m) { return {m.resolution, m.origin, m.rows()}; }
 
 }  // namespace ksmc::stdlib::indoor::io

@@ -8,6 +8,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "runtime/io/atomic_file.h"
+#include "stdlib/indoor/io/quad.h"
 #include "stdlib/indoor/io/world_images.h"
 
 namespace ksmc::stdlib::indoor::io {
@@ -19,10 +20,6 @@ constexpr int kShift = 4;
 cv::Point fixed(const Point2& p, int s) {
   return {static_cast<int>(std::lround((p.x * s + (s - 1) * 0.5) * (1 << kShift))),
           static_cast<int>(std::lround((p.y * s + (s - 1) * 0.5) * (1 << kShift)))};
-}
-
-bool finite_quad(const std::array<Point2, 4>& q) {
-  return std::all_of(q.begin(), q.end(), [](const Point2& p) { return std::isfinite(p.x) && std::isfinite(p.y); });
 }
 
 void outline(cv::Mat& img, const std::array<Point2, 4>& q, int s, const cv::Scalar& colour, int px) {

@@ -9,32 +9,11 @@
 #include <vector>
 
 #include "runtime/io/atomic_file.h"
+#include "stdlib/indoor/io/quad.h"
 #include "stdlib/indoor/io/world_images.h"
 #include "stdlib/indoor/io/world_json.h"
 
 namespace ksmc::stdlib::indoor::io {
-
-namespace {
-
-// Distance from p to the boundary of the convex quadrilateral q (corners in order, either
-// orientation), positive inside, negative outside (the smallest signed edge distance).
-double depth_inside(const std::array<Point2, 4>& q, double orientation, Point2 p) {
-  double d = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < 4; ++i) {
-    const Point2 a = q[i], b = q[(i + 1) % 4];
-    const double ex = b.x - a.x, ey = b.y - a.y;
-    const double len = std::hypot(ex, ey);
-    if (!(len > 0.0)) return -1.0;  // degenerate rectangle: covers no cell centre
-    d = std::min(d, orientation * (ex * (p.y - a.y) - ey * (p.x - a.x)) / len);
-  }
-  return d;
-}
-
-bool finite_corners(const UnitResult& u) {
-  return std::all_of(u.corners.begin(), u.corners.end(), [](const Point2& p) { return std::isfinite(p.x) && std::isfinite(p.y); });
-}
-
-}  // namespace
 
 cv::Mat1w render_segmentation(const ClassGrid& grid, const WorldResult& w) {
   validate_world(w, false);
@@ -45,14 +24,9 @@ cv::Mat1w render_segmentation(const ClassGrid& grid, const WorldResult& w) {
   std::vector<Point2> centre(w.units.size());
   for (std::size_t i = 0; i < w.units.size(); ++i) {
     const auto& u = w.units[i];
-    if (!finite_corners(u)) continue;
+    if (!finite_quad(u.corners)) continue;
     const auto& q = u.corners;
     centre[i] = {(q[0].x + q[1].x + q[2].x + q[3].x) / 4.0, (q[0].y + q[1].y + q[2].y + q[3].y) / 4.0};
-    // Twice the signed area (image y down): its sign orients the edge normals inwards.
-    double area2 = 0.0;
-    for (std::size_t k = 0; k < 4; ++k) area2 += q[k].x * q[(k + 1) % 4].y - q[(k + 1) % 4].x * q[k].y;
-    if (area2 == 0.0) continue;
-    const double orientation = area2 > 0.0 ? 1.0 : -1.0;
     double x0 = q[0].x, x1 = q[0].x, y0 = q[0].y, y1 = q[0].y;
     for (const auto& p : q) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
     const int c0 = std::max(0, static_cast<int>(std::ceil(x0))), c1 = std::min(grid.cols - 1, static_cast<int>(std::floor(x1)));
@@ -61,7 +35,7 @@ cv::Mat1w render_segmentation(const ClassGrid& grid, const WorldResult& w) {
       for (int c = c0; c <= c1; ++c) {
         if (!free_cell(r, c)) continue;
         const Point2 p{static_cast<double>(c), static_cast<double>(r)};
-        const auto d = static_cast<float>(depth_inside(q, orientation, p));
+        const auto d = static_cast<float>(depth_inside(q, p));
         if (!(d > 0.0f)) continue;
         int& o = owner(r, c);
         float& best = depth(r, c);

@@ -9,6 +9,7 @@
 
 #include "runtime/io/atomic_file.h"
 #include "stdlib/indoor/io/map_frame.h"
+#include "stdlib/indoor/io/quad.h"
 #include "stdlib/indoor/io/world_json.h"
 
 namespace ksmc::stdlib::indoor::io {
@@ -45,9 +46,8 @@ std::string world_obj_text(const WorldResult& w, double height) {
   int next_vertex = 1;
   for (const auto& u : w.units) {
     const auto& q = u.corners;
-    if (!std::all_of(q.begin(), q.end(), [](const Point2& p) { return std::isfinite(p.x) && std::isfinite(p.y); })) continue;
-    double area2 = 0.0;
-    for (std::size_t k = 0; k < 4; ++k) area2 += q[k].x * q[(k + 1) % 4].y - q[(k + 1) % 4].x * q[k].y;
+    if (!finite_quad(q)) continue;
+    const double area2 = signed_area2(q);
     if (area2 == 0.0) continue;
     const double inward = area2 > 0.0 ? 1.0 : -1.0;  // image y down: left of the edge is inside for area2 > 0
     int piece_no = 0;

@@ -6,6 +6,8 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
+#include <utility>
 #include <sstream>
 
 #include "runtime/domain/kernels.h"
@@ -13,8 +15,10 @@
 #include "stdlib/indoor/detect/orientation.h"
 #include "stdlib/indoor/detect/rpb.h"
 #include "stdlib/indoor/detect/wbu.h"
+#include "stdlib/indoor/io/map_frame.h"
 #include "stdlib/indoor/io/map_loader.h"
 #include "stdlib/indoor/io/posterior_plot.h"
+#include "stdlib/indoor/io/route.h"
 #include "stdlib/indoor/io/world_writer.h"
 #include "stdlib/indoor/kit/indoor_model.h"
 #include "stdlib/indoor/kit/solid_interior.h"
@@ -30,7 +34,8 @@ namespace {
 
 constexpr double kPiD = 3.14159265358979323846;
 
-Point2 parse_robot(const std::string& text, const io::OccupancyMap& map) {
+// "x,y" in metres (map frame) -> cell coordinates; `flag` names the flag in errors.
+Point2 parse_point(const std::string& text, const io::OccupancyMap& map, const std::string& flag) {
   const auto comma = text.find(',');
   double x = 0.0, y = 0.0;
   bool ok = comma != std::string::npos;
@@ -44,13 +49,20 @@ Point2 parse_robot(const std::string& text, const io::OccupancyMap& map) {
       ok = false;
     }
   }
-  if (!ok) throw cli::UsageError("--robot: expected x,y in metres (map frame), got '" + text + "'");
-  // map_server frame: origin = world pose of the lower-left pixel; rows grow downwards.
-  const double col = (x - map.origin.x) / map.resolution;
-  const double row = static_cast<double>(map.rows() - 1) - (y - map.origin.y) / map.resolution;
-  if (!(col >= 0 && row >= 0 && col < map.cols() && row < map.rows()))
-    throw cli::UsageError("--robot " + text + ": outside the map");
-  return {col, row};
+  if (!ok) throw cli::UsageError("--" + flag + ": expected x,y in metres (map frame), got '" + text + "'");
+  const Point2 p = io::frame_of(map).to_cells({x, y});  // map_server frame (io/map_frame.h)
+  if (!(p.x >= -0.5 && p.y >= -0.5 && p.x < map.cols() - 0.5 && p.y < map.rows() - 0.5))
+    throw cli::UsageError("--" + flag + " " + text + ": outside the map");
+  return p;
+}
+
+Point2 parse_robot(const std::string& text, const io::OccupancyMap& map) { return parse_point(text, map, "robot"); }
+
+// --path "X1,Y1 X2,Y2": start and goal in cells.
+std::pair<Point2, Point2> parse_path(const std::string& text, const io::OccupancyMap& map) {
+  const auto space = text.find(' ');
+  if (space == std::string::npos) throw cli::UsageError("--path: expected two points X1,Y1 X2,Y2 in metres, got '" + text + "'");
+  return {parse_point(text.substr(0, space), map, "path"), parse_point(text.substr(space + 1), map, "path")};
 }
 
 std::uint64_t flag_count(const cli::FlagValues& f, const std::string& name) {
@@ -252,11 +264,20 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
       return m.semantics()->evidence_db(*sem);
     };
   const std::string source = path.filename().string();
-  setup.write_results = [map, source](const mcmc::RunResult& run, mcmc::Model& best, cli::OutputDir& out) {
+  std::optional<std::pair<Point2, Point2>> route;  // --path start and goal, cells
+  if (in.flags.given("path")) route = parse_path(in.flags.text("path"), *map);
+  setup.write_results = [map, source, route](const mcmc::RunResult& run, mcmc::Model& best, cli::OutputDir& out) {
     auto& m = static_cast<IndoorModel&>(best);
     io::WorldResult result = make_result(m, *map, source, run);
     result.posterior = posterior_worlds(m, run);
+    nlohmann::ordered_json path_json;
+    if (route) {
+      std::string error;
+      path_json = io::plan_route(result, route->first, route->second, error);
+      if (!error.empty()) std::fprintf(stderr, "indoor: error: --path: %s (path.json says so)\n", error.c_str());
+    }
     const io::WorldFiles files = io::write_world_outputs(out.dir(), *map, result);
+    if (route) io::write_path_json(out.dir() / "path.json", path_json);
     if (!files.graph_png_skipped.empty()) std::fprintf(stderr, "indoor: %s\n", files.graph_png_skipped.c_str());
   };
   nlohmann::json extra = nlohmann::json::object();
@@ -291,6 +312,7 @@ cli::DomainSpec domain_spec(const blocks::Binding& b) {
       {"semantic-every", "proposals between Markov logic refreshes of the unit types (0 = never)", "500", K::integer},
       {"semantic-after", "first proposal with a Markov logic refresh", "1000", K::integer},
       {"source-refresh", "proposals between FSU / door candidate refreshes", "200", K::integer},
+      {"path", "X1,Y1 X2,Y2: a route (metres, map frame) from the first point to the second over the door graph, written to path.json and drawn on overlay.png", "", K::text, false, 2},
       {"solid-depth", "occupied cells farther than this (m) from every free cell are classified unexplained: the inside of solid black regions, e.g. a map's outside painted black (0 = eq. 3.7 as is)", "0.5", K::real},
   };
   spec.load = [binding](const cli::DomainInput& in) { return load(binding, in); };
