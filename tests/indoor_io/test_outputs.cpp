@@ -149,9 +149,16 @@ TEST_CASE("world outputs decode back to what was written") {
     CHECK(j["units"][4]["type"] == "corridor");
     CHECK(j["units"][4]["type_probs"]["corridor"].get<double>() == Approx(0.91));
     CHECK(j["units"][0]["corners"] == nlohmann::json::parse("[[20,30],[150,30],[150,170],[20,170]]"));
+    // The same in map-frame metres (origin 0,0, 0.05 m, 400 rows): x = (col + 0.5) * 0.05,
+    // y = (400 - 0.5 - row) * 0.05.
+    CHECK(j["units"][0]["corners_m"][0] == nlohmann::json::parse("[1.025,18.475]"));
+    CHECK(j["units"][0]["centre_m"] == nlohmann::json::parse("[4.275,14.975]"));
+    CHECK(j["units"][0]["size_m"] == nlohmann::json::parse("[6.5,7]"));
     REQUIRE(j["doors"].size() == 9);
     CHECK(j["doors"][8]["units"] == nlohmann::json::parse("[6,0]"));
     CHECK(j["doors"][0]["segment"][1] == nlohmann::json::parse("[77,170]"));
+    CHECK(j["doors"][0]["segment_m"][1] == nlohmann::json::parse("[3.875,11.475]"));
+    CHECK(j["doors"][0]["width_m"].get<double>() == Approx(0.85));
     CHECK(j["adjacent"].size() == 12);
     CHECK(j["adjacent"][0] == nlohmann::json::parse("[1,2]"));
     for (const char* m : kRequiredMetrics) CHECK(j["metrics"].contains(m));
