@@ -257,6 +257,17 @@ TEST_CASE("graph.dot letters come from the run's type names") {
   CHECK(d.find("u4 [label=\"4\", tooltip=\"untyped\"") != std::string::npos);
 }
 
+TEST_CASE("trace.png only from a recorded trace") {
+  const OccupancyMap map = load_map_yaml(kExample / "sim_office.yaml");
+  WorldResult w = sample_result(map);
+  w.trace.clear();
+  TempDir dir("no_trace");
+  const WorldFiles f = write_world_outputs(dir / "run", map, w);
+  CHECK(f.trace_png.empty());
+  CHECK(!fs::exists(dir / "run" / "trace.png"));
+  CHECK(fs::exists(f.world_json));
+}
+
 TEST_CASE("outputs are byte-identical across runs") {
   const OccupancyMap map = load_map_yaml(kExample / "sim_office.yaml");
   const WorldResult w = sample_result(map);

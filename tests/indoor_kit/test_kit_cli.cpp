@@ -75,8 +75,9 @@ TEST_CASE("indoor-dev: the simulated office against its truth", "[indoor_kit][cl
   const Outcome o = run_dev((src / "sim_office.yaml").string() + " --out " + out.string() + " --seed 1 --iterations 20000", d);
   INFO(o.err);
   REQUIRE(o.code == 0);
-  for (const char* f : {"world.json", "labels.png", "segmentation.png", "overlay.png", "trace.png", "graph.dot", "summary.json"})
+  for (const char* f : {"world.json", "labels.png", "segmentation.png", "overlay.png", "graph.dot", "summary.json"})
     CHECK(fs::exists(out / f));
+  CHECK(!fs::exists(out / "trace.png"));  // no --trace: nothing recorded, no picture
   const auto result = ksmc::stdlib::indoor::io::read_world_json(out / "world.json");
   const auto truth = ksmc::stdlib::indoor::io::read_world_json(src / "sim_office_truth.json");
   const double k = result.metrics.at("cell_prediction_rate");
@@ -117,10 +118,11 @@ TEST_CASE("indoor-dev: --path, --samples and the map-reader outputs", "[indoor_k
   const fs::path d = temp_dir("cli_path");
   const std::string map = (src / "sim_office.yaml").string() + " --seed 1 --iterations 3000";
   // Two points in the top-left room (metres, map frame): a route inside one unit.
-  const Outcome o = run_dev(map + " --out " + (d / "a").string() + " --samples 20 --path 4.25,14.5 5.5,12", d);
+  const Outcome o = run_dev(map + " --out " + (d / "a").string() + " --samples 20 --trace --path 4.25,14.5 5.5,12", d);
   INFO(o.err);
   REQUIRE(o.code == 0);
-  for (const char* f : {"segmentation.png", "world.obj", "posterior.png", "path.json"}) CHECK(fs::exists(d / "a" / f));
+  for (const char* f : {"segmentation.png", "world.obj", "posterior.png", "path.json", "trace.png", "trace.csv"})
+    CHECK(fs::exists(d / "a" / f));
   const auto path = nlohmann::json::parse(std::ifstream(d / "a" / "path.json"));
   CHECK(path.at("found") == true);
   CHECK(path.at("units").size() == 1);

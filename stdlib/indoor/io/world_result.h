@@ -63,7 +63,7 @@ struct WorldResult {
   // At least cell_prediction_rate, iterations, seconds, iterations_per_second, log_posterior.
   // Integral values are written as JSON integers.
   std::map<std::string, double> metrics;
-  std::vector<TraceSample> trace;              // for trace.png; not part of world.json
+  std::vector<TraceSample> trace;              // for trace.png (none when empty); not part of world.json
   // The unit types (the domain's exactly-one-of group over units, in declaration order): they
   // pick the node colours of scene.dot. Written as "types" when not empty.
   std::vector<std::string> types;

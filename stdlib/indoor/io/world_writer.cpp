@@ -32,7 +32,11 @@ WorldFiles write_world_outputs(const std::filesystem::path& dir, const Occupancy
   write_labels_png(f.labels_png, w, map.rows(), map.cols());
   write_segmentation_png(f.segmentation_png, map.grid, w);
   write_overlay_png(f.overlay_png, map.grid, w);
-  write_trace_png(f.trace_png, w.trace);
+  if (w.trace.empty()) {
+    f.trace_png.clear();  // no recorded trace, no picture
+  } else {
+    write_trace_png(f.trace_png, w.trace);
+  }
   write_graph_dot(f.graph_dot, w);
   write_world_obj(f.world_obj, w);
   if (!w.posterior.empty()) {

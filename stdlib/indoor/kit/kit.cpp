@@ -112,12 +112,8 @@ io::WorldResult make_result(IndoorModel& m, const io::OccupancyMap& map, const s
   r.metrics["units"] = static_cast<double>(w.units().size());
   r.metrics["doors"] = static_cast<double>(w.doors().size());
   r.metrics["best_iteration"] = static_cast<double>(run.best().best_iteration);
+  // Only a recorded trace (--trace / --trace-every); without one there is no trace.png.
   for (const auto& t : run.best().trace) r.trace.push_back({static_cast<std::int64_t>(t.iteration), t.log_posterior, t.acceptance_window});
-  if (r.trace.empty()) {
-    const auto& c = run.best();
-    r.trace.push_back({0, c.initial_log_posterior, 0.0});
-    r.trace.push_back({static_cast<std::int64_t>(c.iterations), c.final_log_posterior, c.iterations ? static_cast<double>(c.accepted()) / static_cast<double>(c.iterations) : 0.0});
-  }
   return r;
 }
 
