@@ -139,6 +139,10 @@ TEST_CASE("indoor-dev: --path, --samples and the map-reader outputs", "[indoor_k
   // A start in no unit (the grey area right of the top rooms): the error is printed and in path.json.
   CHECK_THAT(n.err, Catch::Contains("--path: the start is outside every unit"));
   CHECK(nlohmann::json::parse(std::ifstream(d / "b" / "path.json")).at("found") == false);
+  // A resolution conflict (the YAML's 0.05 against --resolution) is printed, not only stored.
+  const Outcome r = run_dev((src / "sim_office.yaml").string() + " --iterations 200 --resolution 0.1 --out " + (d / "r").string(), d);
+  CHECK(r.code == 0);
+  CHECK_THAT(r.err, Catch::Contains("warning: resolution 0.05 from the YAML overridden by 0.1"));
   // Outside the map: a usage error before sampling.
   const Outcome u = run_dev(map + " --out " + (d / "c").string() + " --path 4.25,14.5 45,5", d);
   CHECK(u.code == 2);

@@ -212,6 +212,7 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
     throw cli::UsageError("--thresholds must be 'strict', 'ros' or 'bormann', got '" + th + "'");
   }
   auto map = std::make_shared<io::OccupancyMap>(io::load_map(path, opts));
+  for (const auto& w : map->warnings) std::fprintf(stderr, "%s\n", w.c_str());  // also in summary.json
   runtime::io::throw_if_cancelled("indoor: after reading the map");  // large maps: each step takes long
   // Large maps say their cost up front (issue 16, measured at the default iterations: a
   // 10000 x 10000 map took 12-22 min and 3.5 GB, i.e. about 35 bytes per cell).
