@@ -204,12 +204,14 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
   const std::string th = in.flags.text("thresholds");
   if (th == "bormann") {
     opts.thresholds = io::Thresholds::bormann();
+  } else if (th == "drawn") {
+    opts.thresholds = io::Thresholds::drawn();
   } else if (th == "strict") {
     // SLAM images (gmapping / Radish PNGs) paint unexplored space light grey: only near-white
     // (>= 250) is free, map_server's dark threshold gives occupied, the rest is unknown.
     opts.thresholds.free_thresh = 5.5 / 255.0;
   } else if (th != "ros") {
-    throw cli::UsageError("--thresholds must be 'strict', 'ros' or 'bormann', got '" + th + "'");
+    throw cli::UsageError("--thresholds must be 'drawn', 'strict', 'ros' or 'bormann', got '" + th + "'");
   }
   auto map = std::make_shared<io::OccupancyMap>(io::load_map(path, opts));
   for (const auto& w : map->warnings) std::fprintf(stderr, "%s\n", w.c_str());  // also in summary.json
@@ -305,7 +307,7 @@ cli::DomainSpec domain_spec(const blocks::Binding& b) {
   spec.flags = {
       {"resolution", "metres per cell (overrides the YAML / PGM comment; default 0.05 for bare images)", "", K::real},
       {"robot", "robot position x,y in metres (map frame): seeds the RPB detector", "", K::text},
-      {"thresholds", "grey values of bare images: strict (>= 250 free, map_server occupied, else unknown), ros (map_server) or bormann (>= 250 free, else occupied); a YAML sets its own", "strict", K::text},
+      {"thresholds", "grey values of bare images (a YAML sets its own): drawn (>= 250 free, < 89 occupied, between: the one grey painting >= 5 % of the image unknown, the other greys occupied: drawn plans' grey walls and SLAM images' unexplored paint both read right), strict (>= 250 free, < 89 occupied, else unknown), ros (map_server) or bormann (>= 250 free, else occupied)", "drawn", K::text},
       {"semantic-every", "proposals between Markov logic refreshes of the unit types (0 = never)", "500", K::integer},
       {"semantic-after", "first proposal with a Markov logic refresh", "1000", K::integer},
       {"source-refresh", "proposals between FSU / door candidate refreshes", "200", K::integer},
