@@ -1,5 +1,6 @@
 // The indoor result as plain data, filled by the domain binary after sampling and written by the
-// writers in this folder (world.json, labels.png, overlay.png, trace.png, scene.dot).
+// writers in this folder (world.json, labels.png, segmentation.png, overlay.png, trace.png,
+// graph.dot/png, world.obj, posterior.png; docs/indoor_outputs.md).
 //
 // Coordinates are continuous cell coordinates in the image convention of rect.h: x = column
 // (right), y = row (down), origin at the top-left pixel; integer coordinates are cell centres
@@ -65,7 +66,7 @@ struct WorldResult {
   std::map<std::string, double> metrics;
   std::vector<TraceSample> trace;              // for trace.png (none when empty); not part of world.json
   // The unit types (the domain's exactly-one-of group over units, in declaration order): they
-  // pick the node colours of scene.dot. Written as "types" when not empty.
+  // pick the unit colours and letters (type_style.h). Written as "types" when not empty.
   std::vector<std::string> types;
   // The marginal of every ground query atom, {"Room": {"u3": 0.91}, "SaLe": {"u3,u7": 0.8}}
   // (units named u<id>; runtime::domain::Semantics::queries_json). Written as "queries", in
