@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <opencv2/imgproc.hpp>
 
@@ -45,12 +46,29 @@ cv::Mat3b render_posterior(const ClassGrid& grid, const WorldResult& w) {
   const std::size_t first = w.posterior.size() > kPosteriorMaxDrawn ? w.posterior.size() - kPosteriorMaxDrawn : 0;
   const std::size_t drawn = w.posterior.size() - first;
   // Per pixel: the number of drawn samples with a unit outline there.
+  // Per sample, the outlines go into `mask`; each unit's bounding box is then added to the count
+  // and cleared, so a pixel two units of one sample share counts once and the whole image is
+  // never touched per sample (large maps, many samples).
   cv::Mat1f count(img.rows, img.cols, 0.0f);
+  cv::Mat1b mask(img.rows, img.cols, static_cast<std::uint8_t>(0));
+  const cv::Rect whole(0, 0, img.cols, img.rows);
   for (std::size_t i = first; i < w.posterior.size(); ++i) {
-    cv::Mat1b mask(img.rows, img.cols, static_cast<std::uint8_t>(0));
-    for (const auto& q : w.posterior[i].units)
-      if (finite_quad(q)) outline(mask, q, s, cv::Scalar(1), 1);
-    cv::add(count, mask, count, cv::noArray(), CV_32F);
+    std::vector<cv::Rect> boxes;
+    for (const auto& q : w.posterior[i].units) {
+      if (!finite_quad(q)) continue;
+      outline(mask, q, s, cv::Scalar(1), 1);
+      double x0 = q[0].x, x1 = q[0].x, y0 = q[0].y, y1 = q[0].y;
+      for (const auto& p : q) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+      const cv::Point a(static_cast<int>(std::floor(x0 * s)) - 1, static_cast<int>(std::floor(y0 * s)) - 1);
+      const cv::Point b(static_cast<int>(std::ceil((x1 + 1) * s)) + 1, static_cast<int>(std::ceil((y1 + 1) * s)) + 1);
+      boxes.push_back(cv::Rect(a, b) & whole);
+    }
+    for (const auto& box : boxes) {
+      if (box.empty()) continue;
+      cv::Mat1f c = count(box);
+      cv::add(c, cv::Scalar(1.0), c, mask(box));
+      mask(box).setTo(0);
+    }
   }
   for (int r = 0; r < img.rows; ++r)
     for (int c = 0; c < img.cols; ++c) {
@@ -63,13 +81,15 @@ cv::Mat3b render_posterior(const ClassGrid& grid, const WorldResult& w) {
       for (int k = 0; k < 3; ++k) px[k] = cv::saturate_cast<std::uint8_t>(px[k] + (target[k] - px[k]) * share);
     }
   // Caption band.
-  const int band = 36;
+  const double font = std::max(0.55, img.cols / 1800.0);  // legible on large maps too
+  const int thick = std::max(1, static_cast<int>(std::lround(font)));
+  const int band = static_cast<int>(std::lround(36 * font / 0.55));
   cv::Mat3b out(img.rows + band, img.cols, cv::Vec3b(255, 255, 255));
   img.copyTo(out(cv::Rect(0, 0, img.cols, img.rows)));
   const std::string caption = "last " + std::to_string(drawn) + " stored samples (iterations " +
                               std::to_string(w.posterior[first].iteration) + "-" + std::to_string(w.posterior.back().iteration) +
                               "): darker = more samples agree";
-  cv::putText(out, caption, {8, img.rows + 24}, cv::FONT_HERSHEY_SIMPLEX, 0.55, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+  cv::putText(out, caption, {8, img.rows + band * 2 / 3}, cv::FONT_HERSHEY_SIMPLEX, font, cv::Scalar(0, 0, 0), thick, cv::LINE_AA);
   return out;
 }
 
