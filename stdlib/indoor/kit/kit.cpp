@@ -300,7 +300,10 @@ cli::DomainSpec domain_spec(const blocks::Binding& b) {
   cli::DomainSpec spec;
   spec.name = binding->domain;
   spec.version = "1.0";
-  spec.description = "semantic indoor maps: typed space units and doors from an occupancy grid";
+  spec.description =
+      "semantic indoor maps: typed space units and doors from an occupancy grid.\n"
+      "Writes world.json, segmentation.png, labels.png, overlay.png, graph.dot/png, world.obj; trace.png with --trace,\n"
+      "posterior.png with --samples N, path.json with --path (docs/indoor_outputs.md)";
   spec.inputs_help = "MAP.(png|pgm|yaml)";
   spec.default_iterations = 10000;
   using K = cli::DomainFlag::Kind;
