@@ -34,7 +34,8 @@ for variant in unfurnished furnished; do
       echo "| $m | $variant | run failed (see $dir.log) | | | | | |"; continue
     fi
     t1=$(date +%s.%N)
-    seg=$dir/segmentation.png; [ -f "$seg" ] || seg=$dir/labels.png
+    seg=$dir/segmentation.png
+    if [ ! -f "$seg" ]; then seg=$dir/labels.png; echo "note: $m ($variant) scored labels.png: the binary wrote no segmentation.png"; fi
     line=$("$scorer" "$gt" "$seg")
     echo "$line $t0 $t1" | awk -v m="$m" -v v="$variant" \
       '{printf "| %s | %s | %.1f | %.1f | %.1f | %s | %s | %.1f |\n", m, v, 100*$1, 100*$2, 100*$3, $4, $5, $7-$6}'

@@ -84,6 +84,7 @@ Counts check_counts(const CommonFlags& cf) {
 struct DomainFlagStorage {
   std::map<std::string, std::string> text;
   std::map<std::string, bool> toggles;
+  std::map<std::string, std::vector<std::string>> words;  // flags of arity > 1
   std::map<std::string, CLI::Option*> options;
 };
 
@@ -93,6 +94,8 @@ void add_domain_flags(CLI::App& app, const DomainSpec& spec, DomainFlagStorage& 
     CLI::Option* opt = nullptr;
     if (f.kind == DomainFlag::Kind::toggle) {
       opt = app.add_flag(long_name, st.toggles[f.name], f.help);
+    } else if (f.arity > 1) {
+      opt = app.add_option(long_name, st.words[f.name], f.help)->expected(f.arity)->allow_extra_args(false);
     } else {
       std::string& value = st.text[f.name];
       value = f.default_value;
@@ -116,7 +119,11 @@ FlagValues collect_domain_flags(const DomainSpec& spec, const DomainFlagStorage&
       v.set(f.name, st.toggles.at(f.name) ? "true" : "false", given);
       continue;
     }
-    const std::string& value = st.text.at(f.name);
+    std::string value = st.text.count(f.name) ? st.text.at(f.name) : f.default_value;
+    if (f.arity > 1 && given) {
+      value.clear();
+      for (const auto& w : st.words.at(f.name)) value += (value.empty() ? "" : " ") + w;
+    }
     if (!given && f.default_value.empty()) continue;
     v.set(f.name, value, given);
     // Check the kind now, so a bad value is a usage error before any work.

@@ -42,6 +42,9 @@ struct DomainFlag {
   std::string default_value;  // "" = none (toggles default to false)
   Kind kind = Kind::text;
   bool required = false;
+  // Text flags only: the number of words the flag takes (--path X1,Y1 X2,Y2 takes 2); the
+  // words reach FlagValues::text joined by single spaces.
+  int arity = 1;
 };
 
 // Values of the domain flags after parsing (defaults filled in), checked by kind.

@@ -1,20 +1,8 @@
 #include "stdlib/tabletop/graph_dot.h"
 
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cstdlib>
-#include <fstream>
-#include <iterator>
-#include <sstream>
-#include <vector>
-
 #include <fmt/format.h>
 
-#include "runtime/io/atomic_file.h"
-
-extern char** environ;
+#include "runtime/io/dot_render.h"
 
 namespace ksmc::stdlib::tabletop {
 
@@ -30,19 +18,6 @@ std::string escape(const std::string& s) {
 }
 
 std::string quote(const std::string& s) { return "\"" + escape(s) + "\""; }
-
-std::filesystem::path find_on_path(const std::string& name) {
-  const char* path = std::getenv("PATH");
-  if (!path) return {};
-  std::stringstream ss(path);
-  std::string dir;
-  while (std::getline(ss, dir, ':')) {
-    if (dir.empty()) continue;
-    const auto candidate = std::filesystem::path(dir) / name;
-    if (::access(candidate.c_str(), X_OK) == 0) return candidate;
-  }
-  return {};
-}
 
 }  // namespace
 
@@ -73,31 +48,7 @@ std::string graph_dot(const TabletopResult& r) {
 
 std::string render_dot_png(const std::filesystem::path& dot_file, const std::filesystem::path& png_file,
                            const std::string& dot_executable) {
-  const std::filesystem::path exe = dot_executable.empty() ? find_on_path("dot") : std::filesystem::path(dot_executable);
-  if (exe.empty() || ::access(exe.c_str(), X_OK) != 0)
-    return fmt::format("Graphviz 'dot' not found{}; skipping {}",
-                       dot_executable.empty() ? " on PATH" : " at " + dot_executable, png_file.string());
-  const std::filesystem::path tmp = png_file.string() + ".dot-render.tmp";
-  std::vector<std::string> args = {exe.string(), "-Tpng", dot_file.string(), "-o", tmp.string()};
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  if (posix_spawn(&pid, exe.c_str(), nullptr, nullptr, argv.data(), environ) != 0)
-    return fmt::format("cannot start {}; skipping {}", exe.string(), png_file.string());
-  int status = 0;
-  if (waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    std::error_code ec;
-    std::filesystem::remove(tmp, ec);
-    return fmt::format("{} -Tpng failed on {}; skipping {}", exe.string(), dot_file.string(), png_file.string());
-  }
-  std::ifstream in(tmp, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  in.close();
-  std::error_code ec;
-  std::filesystem::remove(tmp, ec);
-  ksmc::runtime::io::write_file_atomic(png_file, bytes);
-  return {};
+  return runtime::io::render_dot_png(dot_file, png_file, dot_executable);
 }
 
 }  // namespace ksmc::stdlib::tabletop

@@ -1,4 +1,4 @@
-// Result outputs: world.json, labels.png, overlay.png, trace.png and scene.dot decode back to what
+// Result outputs: world.json, labels.png, overlay.png, trace.png and graph.dot/png decode back to what
 // was written, are byte-identical across runs, and reject inconsistent results. Also the cell
 // prediction rate (eq. 3.39) and the committed simulated example map.
 #include <catch2/catch.hpp>
@@ -14,7 +14,7 @@
 
 #include "stdlib/indoor/io/map_loader.h"
 #include "stdlib/indoor/io/prediction_rate.h"
-#include "stdlib/indoor/io/scene_dot.h"
+#include "stdlib/indoor/io/graph_dot.h"
 #include "stdlib/indoor/io/sim_floor_plan.h"
 #include "stdlib/indoor/io/trace_plot.h"
 #include "stdlib/indoor/io/world_images.h"
@@ -58,6 +58,7 @@ cv::Mat1b predict(const WorldResult& w, int rows, int cols) {
 WorldResult sample_result(const OccupancyMap& map) {
   WorldResult w = make_sim_office().truth;
   w.map = map_info_of(map, "sim_office.yaml");
+  w.types = {"room", "corridor", "hall", "other"};
   w.units[4].type_probs = {{"corridor", 0.91}, {"hall", 0.05}, {"room", 0.03}, {"other", 0.01}};
   w.doors.push_back(DoorResult{9, 6, 0, {Point2{20, 300}, Point2{20, 317}}});  // to the outside
   for (int i = 0; i <= 5000; i += 50) {
@@ -148,9 +149,16 @@ TEST_CASE("world outputs decode back to what was written") {
     CHECK(j["units"][4]["type"] == "corridor");
     CHECK(j["units"][4]["type_probs"]["corridor"].get<double>() == Approx(0.91));
     CHECK(j["units"][0]["corners"] == nlohmann::json::parse("[[20,30],[150,30],[150,170],[20,170]]"));
+    // The same in map-frame metres (origin 0,0, 0.05 m, 400 rows): x = (col + 0.5) * 0.05,
+    // y = (400 - 0.5 - row) * 0.05.
+    CHECK(j["units"][0]["corners_m"][0] == nlohmann::json::parse("[1.025,18.475]"));
+    CHECK(j["units"][0]["centre_m"] == nlohmann::json::parse("[4.275,14.975]"));
+    CHECK(j["units"][0]["size_m"] == nlohmann::json::parse("[6.5,7]"));
     REQUIRE(j["doors"].size() == 9);
     CHECK(j["doors"][8]["units"] == nlohmann::json::parse("[6,0]"));
     CHECK(j["doors"][0]["segment"][1] == nlohmann::json::parse("[77,170]"));
+    CHECK(j["doors"][0]["segment_m"][1] == nlohmann::json::parse("[3.875,11.475]"));
+    CHECK(j["doors"][0]["width_m"].get<double>() == Approx(0.85));
     CHECK(j["adjacent"].size() == 12);
     CHECK(j["adjacent"][0] == nlohmann::json::parse("[1,2]"));
     for (const char* m : kRequiredMetrics) CHECK(j["metrics"].contains(m));
@@ -159,7 +167,7 @@ TEST_CASE("world outputs decode back to what was written") {
     // Key order follows DESIGN §7.
     std::vector<std::string> keys;
     for (auto it = j.begin(); it != j.end(); ++it) keys.push_back(it.key());
-    CHECK(keys == std::vector<std::string>{"adjacent", "doors", "map", "metrics", "units"});  // nlohmann::json sorts
+    CHECK(keys == std::vector<std::string>{"adjacent", "doors", "map", "metrics", "types", "units"});  // nlohmann::json sorts
     const std::string text = read_all(f.world_json);
     CHECK(text.find("\"map\"") < text.find("\"units\""));
     CHECK(text.find("\"units\"") < text.find("\"doors\""));
@@ -181,21 +189,30 @@ TEST_CASE("world outputs decode back to what was written") {
     cv::minMaxLoc(l, &lo, &hi);
     CHECK(hi == 8);
   }
-  SECTION("overlay.png: upscaled, greys, blue walls, cyan doors") {
+  SECTION("overlay.png: upscaled, greys, type fills, blue walls, cyan doors, topology, legend") {
     const cv::Mat3b o = cv::imread(f.overlay_png.string(), cv::IMREAD_COLOR);
     const int s = overlay_scale(400, 600);
     CHECK(s == 2);
-    REQUIRE(o.rows == 800);
+    REQUIRE(o.rows > 800);                                      // the legend band below the map
     REQUIRE(o.cols == 1200);
     CHECK(o(5, 5) == cv::Vec3b(190, 190, 190));                 // unknown outside
-    CHECK(o(2 * 100, 2 * 60) == cv::Vec3b(255, 255, 255));      // free inside room 1
+    // Free inside room 1: white under the translucent fill of the first type (241, 194, 50).
+    CHECK(o(2 * 100, 2 * 60) == cv::Vec3b(163, 228, 249));
     CHECK(o(2 * 100 + 1, 2 * 150 + 1) == cv::Vec3b(255, 0, 0));  // the wall x = 150 is blue
-    CHECK(o(2 * 170 + 1, 2 * 68 + 1) == cv::Vec3b(255, 255, 0)); // door 1 is cyan
-    // The id text is drawn near unit 1's centre (85, 100): dark pixels on the white room.
+    CHECK(o(2 * 170 + 1, 2 * 62 + 1) == cv::Vec3b(255, 255, 0)); // door 1 is cyan
+    CHECK(o(2 * 170 + 1, 2 * 68 + 1) == cv::Vec3b(40, 40, 200)); // its midpoint is a topology node
+    // A topology line runs from unit 1's centre (85, 100) to door 1's midpoint (68.5, 170).
+    const cv::Vec3b on_line = o(2 * 135, 2 * 77);
+    CHECK(on_line[2] > on_line[0] + 50);
+    // The type letter and id (R1) is drawn near unit 1's centre: dark pixels on the light room.
     const cv::Mat3b patch = o(cv::Rect(2 * 85 - 20, 2 * 100 - 20, 40, 40));
     cv::Mat1b dark;
     cv::inRange(patch, cv::Scalar(0, 0, 0), cv::Scalar(200, 100, 60), dark);
     CHECK(cv::countNonZero(dark) > 20);
+    // The legend: one swatch per type in the band, the first in the first type's colour.
+    cv::Mat1b swatch;
+    cv::inRange(o(cv::Rect(0, 800, 1200, o.rows - 800)), cv::Scalar(50, 194, 241), cv::Scalar(50, 194, 241), swatch);
+    CHECK(cv::countNonZero(swatch) > 50);
   }
   SECTION("trace.png: two panels with curves") {
     const cv::Mat3b t = cv::imread(f.trace_png.string(), cv::IMREAD_COLOR);
@@ -207,21 +224,48 @@ TEST_CASE("world outputs decode back to what was written") {
     CHECK(cv::countNonZero(blue) > 500);
     CHECK(cv::countNonZero(red) > 500);
   }
-  SECTION("scene.dot") {
-    const std::string d = read_all(f.scene_dot);
-    CHECK(d.rfind("graph scene {", 0) == 0);
-    CHECK(d.find("u5 [label=\"5\\ncorridor (0.91)\"") != std::string::npos);
-    CHECK(d.find("u1 -- u2 [color=\"grey50\", style=dashed];") != std::string::npos);
-    CHECK(d.find("u1 -- u5 [style=bold") != std::string::npos);
-    CHECK(d.find("u6 -- outside [style=bold") != std::string::npos);
+  SECTION("graph.dot and graph.png") {
+    const std::string d = read_all(f.graph_dot);
+    CHECK(d.rfind("graph topology {", 0) == 0);
+    // Type letter + id from the run's types (room, corridor, hall, other -> R, C, H, O).
+    CHECK(d.find("u5 [label=\"C5\", tooltip=\"corridor 0.91\"") != std::string::npos);
+    CHECK(d.find("u1 [label=\"R1\"") != std::string::npos);
+    CHECK(d.find("u1 -- u2 [style=dashed") != std::string::npos);
+    CHECK(d.find("u1 -- u5 [style=solid") != std::string::npos);
+    CHECK(d.find("u6 -- outside [style=solid") != std::string::npos);
     if (std::system("dot -V >/dev/null 2>&1") == 0) {
-      const std::string cmd = "dot -Tsvg '" + f.scene_dot.string() + "' -o '" +
-                              (dir / "scene.svg").string() + "' 2>/dev/null";
-      CHECK(std::system(cmd.c_str()) == 0);
+      CHECK(f.graph_png_skipped.empty());
+      const cv::Mat g = cv::imread(f.graph_png.string(), cv::IMREAD_COLOR);
+      CHECK(g.cols > 50);
     } else {
-      std::printf("SKIP: graphviz 'dot' not found, scene.dot syntax not checked by dot\n");
+      CHECK(f.graph_png_skipped.find("not found") != std::string::npos);
+      CHECK(!fs::exists(f.graph_png));
+      std::printf("SKIP: graphviz 'dot' not found, graph.png not checked\n");
     }
   }
+}
+
+TEST_CASE("graph.dot letters come from the run's type names") {
+  WorldResult w;
+  w.types = {"Kitchen", "Corridor", "Kiosk"};  // a domain that renamed its types
+  w.units = {UnitResult{1, "Kitchen", {}, {}}, UnitResult{2, "Corridor", {}, {}}, UnitResult{3, "Kiosk", {}, {}},
+             UnitResult{4, "", {}, {}}};
+  const std::string d = graph_dot_text(w);
+  CHECK(d.find("u1 [label=\"Kit") != std::string::npos);  // Kitchen / Kiosk share "K", "Ki"
+  CHECK(d.find("u2 [label=\"C2\"") != std::string::npos);
+  CHECK(d.find("u3 [label=\"Kio3\"") != std::string::npos);
+  CHECK(d.find("u4 [label=\"4\", tooltip=\"untyped\"") != std::string::npos);
+}
+
+TEST_CASE("trace.png only from a recorded trace") {
+  const OccupancyMap map = load_map_yaml(kExample / "sim_office.yaml");
+  WorldResult w = sample_result(map);
+  w.trace.clear();
+  TempDir dir("no_trace");
+  const WorldFiles f = write_world_outputs(dir / "run", map, w);
+  CHECK(f.trace_png.empty());
+  CHECK(!fs::exists(dir / "run" / "trace.png"));
+  CHECK(fs::exists(f.world_json));
 }
 
 TEST_CASE("outputs are byte-identical across runs") {
@@ -232,11 +276,12 @@ TEST_CASE("outputs are byte-identical across runs") {
   const WorldFiles b = write_world_outputs(dir / "b", map, sample_result(map));
   for (const auto& [x, y] : {std::pair{a.world_json, b.world_json}, {a.labels_png, b.labels_png},
                              {a.overlay_png, b.overlay_png}, {a.trace_png, b.trace_png},
-                             {a.scene_dot, b.scene_dot}}) {
+                             {a.graph_dot, b.graph_dot}, {a.segmentation_png, b.segmentation_png}}) {
     INFO(x.filename().string());
     CHECK(read_all(x) == read_all(y));
     CHECK(!read_all(x).empty());
   }
+  if (a.graph_png_skipped.empty()) CHECK(read_all(a.graph_png) == read_all(b.graph_png));
 }
 
 TEST_CASE("inconsistent results are refused before writing") {

@@ -2,6 +2,7 @@
 // non-zero exit and no output folder; the simulated office map is explained against its truth.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -74,8 +75,9 @@ TEST_CASE("indoor-dev: the simulated office against its truth", "[indoor_kit][cl
   const Outcome o = run_dev((src / "sim_office.yaml").string() + " --out " + out.string() + " --seed 1 --iterations 20000", d);
   INFO(o.err);
   REQUIRE(o.code == 0);
-  for (const char* f : {"world.json", "labels.png", "overlay.png", "trace.png", "scene.dot", "summary.json"})
+  for (const char* f : {"world.json", "labels.png", "segmentation.png", "overlay.png", "graph.dot", "summary.json"})
     CHECK(fs::exists(out / f));
+  CHECK(!fs::exists(out / "trace.png"));  // no --trace: nothing recorded, no picture
   const auto result = ksmc::stdlib::indoor::io::read_world_json(out / "world.json");
   const auto truth = ksmc::stdlib::indoor::io::read_world_json(src / "sim_office_truth.json");
   const double k = result.metrics.at("cell_prediction_rate");
@@ -102,7 +104,48 @@ TEST_CASE("indoor-dev: the simulated office against its truth", "[indoor_kit][cl
     CHECK(total == Approx(1.0).epsilon(0.02));
     CHECK(world.at("queries").at(u.at("type").get<std::string>()).contains("u" + std::to_string(u.at("id").get<int>())));
   }
-  std::ifstream dot(out / "scene.dot");
+  std::ifstream dot(out / "graph.dot");
   const std::string dot_text((std::istreambuf_iterator<char>(dot)), std::istreambuf_iterator<char>());
-  CHECK(dot_text.find("(0.00)") == std::string::npos);  // the label shows the unit's own type probability
+  // Every typed node is labelled with its type's letter and its id (R12, C3, H7, O9).
+  for (const auto& u : world.at("units")) {
+    const std::string label = "label=\"" + u.at("type").get<std::string>().substr(0, 1) + std::to_string(u.at("id").get<int>()) + "\"";
+    CHECK(dot_text.find(label) != std::string::npos);
+  }
+}
+
+TEST_CASE("indoor-dev: --path, --samples and the map-reader outputs", "[indoor_kit][cli]") {
+  const fs::path src = fs::path(KSMC_SOURCE_DIR) / "examples/indoor";
+  const fs::path d = temp_dir("cli_path");
+  const std::string map = (src / "sim_office.yaml").string() + " --seed 1 --iterations 3000";
+  // Two points in the top-left room (metres, map frame): a route inside one unit.
+  const Outcome o = run_dev(map + " --out " + (d / "a").string() + " --samples 20 --trace --path 4.25,14.5 5.5,12", d);
+  INFO(o.err);
+  REQUIRE(o.code == 0);
+  for (const char* f : {"segmentation.png", "world.obj", "posterior.png", "path.json", "trace.png", "trace.csv"})
+    CHECK(fs::exists(d / "a" / f));
+  const auto path = nlohmann::json::parse(std::ifstream(d / "a" / "path.json"));
+  CHECK(path.at("found") == true);
+  CHECK(path.at("units").size() == 1);
+  CHECK(path.at("waypoints_m").front() == nlohmann::json::array({4.25, 14.5}));
+  const auto summary = nlohmann::json::parse(std::ifstream(d / "a" / "summary.json"));
+  std::vector<std::string> listed;
+  for (const auto& f : summary.at("outputs")) listed.push_back(f.at("path").get<std::string>());
+  for (const char* f : {"segmentation.png", "world.obj", "posterior.png", "path.json"})
+    CHECK(std::find(listed.begin(), listed.end(), f) != listed.end());
+  // Without --samples there is no posterior.png (nothing to draw).
+  const Outcome n = run_dev(map + " --out " + (d / "b").string() + " --path 29.2,17 4.25,14.5", d);
+  CHECK(n.code == 0);
+  CHECK(!fs::exists(d / "b" / "posterior.png"));
+  // A start in no unit (the grey area right of the top rooms): the error is printed and in path.json.
+  CHECK_THAT(n.err, Catch::Contains("--path: the start is outside every unit"));
+  CHECK(nlohmann::json::parse(std::ifstream(d / "b" / "path.json")).at("found") == false);
+  // A resolution conflict (the YAML's 0.05 against --resolution) is printed, not only stored.
+  const Outcome r = run_dev((src / "sim_office.yaml").string() + " --iterations 200 --resolution 0.1 --out " + (d / "r").string(), d);
+  CHECK(r.code == 0);
+  CHECK_THAT(r.err, Catch::Contains("warning: resolution 0.05 from the YAML overridden by 0.1"));
+  // Outside the map: a usage error before sampling.
+  const Outcome u = run_dev(map + " --out " + (d / "c").string() + " --path 4.25,14.5 45,5", d);
+  CHECK(u.code == 2);
+  CHECK_THAT(u.err, Catch::Contains("--path 45,5: outside the map"));
+  CHECK(!fs::exists(d / "c"));
 }

@@ -1,5 +1,7 @@
 #include "stdlib/indoor/io/occupancy_map.h"
 
+#include <cstddef>
+
 namespace ksmc::stdlib::indoor::io {
 
 Thresholds Thresholds::bormann() {
@@ -9,6 +11,13 @@ Thresholds Thresholds::bormann() {
   t.occupied_thresh = 5.5 / 255.0;
   t.negate = false;
   t.mode = MapMode::Trinary;
+  return t;
+}
+
+Thresholds Thresholds::drawn() {
+  Thresholds t;
+  t.free_thresh = 5.5 / 255.0;
+  t.painted_unknown = true;
   return t;
 }
 
@@ -56,6 +65,22 @@ ClassGrid classify_image(const cv::Mat1b& grey, const Thresholds& t) {
   std::uint8_t lut[256];
   for (int v = 0; v < 256; ++v) {
     lut[v] = static_cast<std::uint8_t>(classify_value(static_cast<std::uint8_t>(v), t));
+  }
+  if (t.painted_unknown) {
+    std::size_t hist[256] = {};
+    for (int r = 0; r < grey.rows; ++r) {
+      const std::uint8_t* in = grey.ptr<std::uint8_t>(r);
+      for (int c = 0; c < grey.cols; ++c) ++hist[in[c]];
+    }
+    int paint = -1;  // the most frequent grey between the thresholds (ties: the lighter)
+    for (int v = 0; v < 256; ++v) {
+      if (lut[v] != static_cast<std::uint8_t>(Cell::Unknown)) continue;
+      if (paint < 0 || hist[v] >= hist[paint]) paint = v;
+    }
+    const bool painted = paint >= 0 && static_cast<double>(hist[paint]) >= kPaintShare * static_cast<double>(grey.total());
+    for (int v = 0; v < 256; ++v)
+      if (lut[v] == static_cast<std::uint8_t>(Cell::Unknown) && !(painted && v == paint))
+        lut[v] = static_cast<std::uint8_t>(Cell::Occupied);
   }
   ClassGrid out(grey.rows, grey.cols);
   for (int r = 0; r < grey.rows; ++r) {

@@ -35,10 +35,23 @@ struct Thresholds {
   bool negate = false;
   MapMode mode = MapMode::Trinary;
 
+  // Only with painted_unknown: grey values between the thresholds are occupied (drawn walls,
+  // furniture), except the most frequent of them when it covers at least kPaintShare of the
+  // image: that is the paint of unexplored space and stays unknown.
+  bool painted_unknown = false;
+
   // The Bormann/IPA benchmark convention: a pixel is free iff its value is >= 250,
   // everything darker is occupied (no unknown class).
   static Thresholds bormann();
+  // The default for bare images (no YAML): >= 250 free (the benchmark convention; map_saver
+  // writes 254), map_server's dark threshold (p > 0.65) occupied, and the greys between
+  // by painted_unknown. Drawn floor plans (grey walls on a grey outside) and SLAM images (one
+  // light grey for unexplored space) both read right.
+  static Thresholds drawn();
 };
+
+// The share of the image the unexplored-space paint must cover (Thresholds::painted_unknown).
+inline constexpr double kPaintShare = 0.05;
 
 struct Pose2 {
   double x = 0.0;    // m, world position of the lower-left pixel (map_server convention)
@@ -74,7 +87,7 @@ ClassCounts count_classes(const ClassGrid& grid);
 // Classifies one grey value (0..255, before negate) with map_server semantics.
 Cell classify_value(std::uint8_t value, const Thresholds& t);
 
-// Classifies a whole grey image.
+// Classifies a whole grey image (with painted_unknown: by the image's own grey histogram).
 ClassGrid classify_image(const cv::Mat1b& grey, const Thresholds& t);
 
 }  // namespace ksmc::stdlib::indoor::io

@@ -1,5 +1,5 @@
 // ksmc-render-world MAP WORLD_JSON OUT_DIR [--resolution R]
-// Re-renders labels.png, overlay.png and scene.dot for a world.json (a result of an earlier run or
+// Re-renders labels.png, segmentation.png, overlay.png and graph.dot for a world.json (a result of an earlier run or
 // a ground-truth file) over its map. Useful to look at examples/indoor/sim_office_truth.json.
 #include <cstdio>
 #include <exception>
@@ -9,13 +9,14 @@
 #include <CLI/CLI.hpp>
 
 #include "stdlib/indoor/io/map_loader.h"
-#include "stdlib/indoor/io/scene_dot.h"
+#include "stdlib/indoor/io/graph_dot.h"
+#include "stdlib/indoor/io/segmentation.h"
 #include "stdlib/indoor/io/world_images.h"
 #include "stdlib/indoor/io/world_json_read.h"
 
 int main(int argc, char** argv) {
   namespace io = ksmc::stdlib::indoor::io;
-  CLI::App app{"Render labels.png, overlay.png and scene.dot of a world.json over its map"};
+  CLI::App app{"Render labels.png, segmentation.png, overlay.png and graph.dot of a world.json over its map"};
   std::string map_path, world_path, out_dir;
   double resolution = 0.0;
   app.add_option("map", map_path, "map_server YAML, PGM or PNG")->required();
@@ -38,8 +39,9 @@ int main(int argc, char** argv) {
     std::filesystem::create_directories(out);
     io::write_labels_png(out / "labels.png", w, m.rows(), m.cols());
     io::write_overlay_png(out / "overlay.png", m.grid, w);
-    io::write_scene_dot(out / "scene.dot", w);
-    std::printf("wrote %s/{labels.png,overlay.png,scene.dot}\n", out.string().c_str());
+    io::write_segmentation_png(out / "segmentation.png", m.grid, w);
+    io::write_graph_dot(out / "graph.dot", w);
+    std::printf("wrote %s/{labels.png,segmentation.png,overlay.png,graph.dot}\n", out.string().c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return 1;

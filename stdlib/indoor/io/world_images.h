@@ -1,5 +1,8 @@
-// labels.png (16-bit unit id per cell) and overlay.png (seed Fig. 3.21-d style: the classified map
-// in greys, unit walls blue, doors cyan, unit ids at the unit centres).
+// labels.png (16-bit unit id per cell) and overlay.png (seed Fig. 3.21-d / 3.32-d style: the
+// classified map in greys, units filled with their type's colour (legend in a band below
+// the map when the run has types), unit walls
+// blue, doors cyan, topology lines centre - door - centre, type letter + id at each unit centre,
+// the --path route in magenta from a green start to a red goal).
 #pragma once
 
 #include <filesystem>
@@ -20,7 +23,8 @@ cv::Mat1w render_labels(const WorldResult& w, int rows, int cols);
 // side, at most 32x) so the id text is legible; maps of 1200 px or more stay at 1x.
 int overlay_scale(int rows, int cols);
 
-// BGR overlay image of `grid` (Cell values) upscaled by overlay_scale().
+// BGR overlay image of `grid` (Cell values) upscaled by overlay_scale(); with types, the legend
+// band adds rows below the map.
 cv::Mat3b render_overlay(const ClassGrid& grid, const WorldResult& w);
 
 // PNG bytes (cv::imencode, fixed parameters, so identical input gives identical bytes).

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "runtime/io/atomic_file.h"
+#include "stdlib/indoor/io/map_frame.h"
 
 namespace ksmc::stdlib::indoor::io {
 
@@ -34,6 +35,13 @@ ordered_json number(double v) {
 }
 
 ordered_json point(const Point2& p) { return ordered_json::array({number(p.x), number(p.y)}); }
+
+// Metres, rounded to 0.1 mm (far below any map's resolution) for readable, stable output.
+double mm(double v) { return std::round(v * 1e4) / 1e4; }
+ordered_json point_m(const MapFrame& f, const Point2& cell) {
+  const Point2 m = f.to_metres(cell);
+  return ordered_json::array({number(mm(m.x)), number(mm(m.y))});
+}
 
 }  // namespace
 
@@ -84,21 +92,35 @@ ordered_json world_to_json(const WorldResult& w) {
                               {"unknown", w.map.counts.unknown},
                               {"occupied", w.map.counts.occupied}};
 
+  // Every position in cells (image convention, world_result.h) and in map-frame metres
+  // (map_frame.h): *_m keys.
+  const MapFrame frame = frame_of(w.map);
+  const double res = w.map.resolution;
   ordered_json units = ordered_json::array();
   for (const auto& u : w.units) {
     ordered_json probs = ordered_json::object();
     for (const auto& [k, v] : u.type_probs) probs[k] = number(v);  // std::map: sorted keys
-    ordered_json corners = ordered_json::array();
-    for (const auto& c : u.corners) corners.push_back(point(c));
+    ordered_json corners = ordered_json::array(), corners_m = ordered_json::array();
+    for (const auto& c : u.corners) {
+      corners.push_back(point(c));
+      corners_m.push_back(point_m(frame, c));
+    }
+    const auto& q = u.corners;
+    const double side_w = std::hypot(q[1].x - q[0].x, q[1].y - q[0].y), side_h = std::hypot(q[2].x - q[1].x, q[2].y - q[1].y);
     units.push_back(ordered_json{{"id", u.id}, {"type", u.type}, {"type_probs", probs},
-                                 {"corners", corners}});
+                                 {"corners", corners}, {"corners_m", corners_m},
+                                 {"centre_m", point_m(frame, unit_centre(u))},
+                                 {"size_m", ordered_json::array({number(mm(side_w * res)), number(mm(side_h * res))})}});
   }
   ordered_json doors = ordered_json::array();
   for (const auto& d : w.doors) {
+    const double width = std::hypot(d.segment[1].x - d.segment[0].x, d.segment[1].y - d.segment[0].y);
     doors.push_back(ordered_json{{"id", d.id},
                                  {"units", ordered_json::array({d.unit_a, d.unit_b})},
                                  {"segment", ordered_json::array({point(d.segment[0]),
-                                                                  point(d.segment[1])})}});
+                                                                  point(d.segment[1])})},
+                                 {"segment_m", ordered_json::array({point_m(frame, d.segment[0]), point_m(frame, d.segment[1])})},
+                                 {"width_m", number(mm(width * res))}});
   }
   ordered_json adjacent = ordered_json::array();
   for (const auto& [a, b] : w.adjacent) adjacent.push_back(ordered_json::array({a, b}));

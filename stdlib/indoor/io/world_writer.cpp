@@ -4,10 +4,14 @@
 #include <string>
 #include <system_error>
 
-#include "stdlib/indoor/io/scene_dot.h"
+#include "runtime/io/dot_render.h"
+#include "stdlib/indoor/io/graph_dot.h"
+#include "stdlib/indoor/io/posterior_plot.h"
+#include "stdlib/indoor/io/segmentation.h"
 #include "stdlib/indoor/io/trace_plot.h"
 #include "stdlib/indoor/io/world_images.h"
 #include "stdlib/indoor/io/world_json.h"
+#include "stdlib/indoor/io/world_obj.h"
 
 namespace ksmc::stdlib::indoor::io {
 
@@ -22,13 +26,24 @@ WorldFiles write_world_outputs(const std::filesystem::path& dir, const Occupancy
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw std::runtime_error(dir.string() + ": cannot create output folder: " + ec.message());
-  WorldFiles f{dir / "world.json", dir / "labels.png", dir / "overlay.png", dir / "trace.png",
-               dir / "scene.dot"};
+  WorldFiles f{dir / "world.json", dir / "labels.png", dir / "segmentation.png", dir / "overlay.png", dir / "trace.png",
+               dir / "graph.dot", dir / "graph.png", dir / "world.obj", {}, {}};
   write_world_json(f.world_json, w);
   write_labels_png(f.labels_png, w, map.rows(), map.cols());
+  write_segmentation_png(f.segmentation_png, map.grid, w);
   write_overlay_png(f.overlay_png, map.grid, w);
-  write_trace_png(f.trace_png, w.trace);
-  write_scene_dot(f.scene_dot, w);
+  if (w.trace.empty()) {
+    f.trace_png.clear();  // no recorded trace, no picture
+  } else {
+    write_trace_png(f.trace_png, w.trace);
+  }
+  write_graph_dot(f.graph_dot, w);
+  write_world_obj(f.world_obj, w);
+  if (!w.posterior.empty()) {
+    f.posterior_png = dir / "posterior.png";
+    write_posterior_png(f.posterior_png, map.grid, w);
+  }
+  f.graph_png_skipped = runtime::io::render_dot_png(f.graph_dot, f.graph_png);
   return f;
 }
 

@@ -6,6 +6,8 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
+#include <utility>
 #include <sstream>
 
 #include "runtime/domain/kernels.h"
@@ -13,7 +15,10 @@
 #include "stdlib/indoor/detect/orientation.h"
 #include "stdlib/indoor/detect/rpb.h"
 #include "stdlib/indoor/detect/wbu.h"
+#include "stdlib/indoor/io/map_frame.h"
 #include "stdlib/indoor/io/map_loader.h"
+#include "stdlib/indoor/io/posterior_plot.h"
+#include "stdlib/indoor/io/route.h"
 #include "stdlib/indoor/io/world_writer.h"
 #include "stdlib/indoor/kit/indoor_model.h"
 #include "stdlib/indoor/kit/solid_interior.h"
@@ -29,7 +34,8 @@ namespace {
 
 constexpr double kPiD = 3.14159265358979323846;
 
-Point2 parse_robot(const std::string& text, const io::OccupancyMap& map) {
+// "x,y" in metres (map frame) -> cell coordinates; `flag` names the flag in errors.
+Point2 parse_point(const std::string& text, const io::OccupancyMap& map, const std::string& flag) {
   const auto comma = text.find(',');
   double x = 0.0, y = 0.0;
   bool ok = comma != std::string::npos;
@@ -43,13 +49,20 @@ Point2 parse_robot(const std::string& text, const io::OccupancyMap& map) {
       ok = false;
     }
   }
-  if (!ok) throw cli::UsageError("--robot: expected x,y in metres (map frame), got '" + text + "'");
-  // map_server frame: origin = world pose of the lower-left pixel; rows grow downwards.
-  const double col = (x - map.origin.x) / map.resolution;
-  const double row = static_cast<double>(map.rows() - 1) - (y - map.origin.y) / map.resolution;
-  if (!(col >= 0 && row >= 0 && col < map.cols() && row < map.rows()))
-    throw cli::UsageError("--robot " + text + ": outside the map");
-  return {col, row};
+  if (!ok) throw cli::UsageError("--" + flag + ": expected x,y in metres (map frame), got '" + text + "'");
+  const Point2 p = io::frame_of(map).to_cells({x, y});  // map_server frame (io/map_frame.h)
+  if (!(p.x >= -0.5 && p.y >= -0.5 && p.x < map.cols() - 0.5 && p.y < map.rows() - 0.5))
+    throw cli::UsageError("--" + flag + " " + text + ": outside the map");
+  return p;
+}
+
+Point2 parse_robot(const std::string& text, const io::OccupancyMap& map) { return parse_point(text, map, "robot"); }
+
+// --path "X1,Y1 X2,Y2": start and goal in cells.
+std::pair<Point2, Point2> parse_path(const std::string& text, const io::OccupancyMap& map) {
+  const auto space = text.find(' ');
+  if (space == std::string::npos) throw cli::UsageError("--path: expected two points X1,Y1 X2,Y2 in metres, got '" + text + "'");
+  return {parse_point(text.substr(0, space), map, "path"), parse_point(text.substr(space + 1), map, "path")};
 }
 
 std::uint64_t flag_count(const cli::FlagValues& f, const std::string& name) {
@@ -62,6 +75,7 @@ io::WorldResult make_result(IndoorModel& m, const io::OccupancyMap& map, const s
                             const mcmc::RunResult& run) {
   io::WorldResult r;
   r.map = io::map_info_of(map, source);
+  r.wall_thickness = m.scored().params().raster.wall_thickness;
   const World& w = m.scored().world();
   const auto sem = m.final_semantics();
   if (sem) {
@@ -101,13 +115,27 @@ io::WorldResult make_result(IndoorModel& m, const io::OccupancyMap& map, const s
   r.metrics["units"] = static_cast<double>(w.units().size());
   r.metrics["doors"] = static_cast<double>(w.doors().size());
   r.metrics["best_iteration"] = static_cast<double>(run.best().best_iteration);
+  // Only a recorded trace (--trace / --trace-every); without one there is no trace.png.
   for (const auto& t : run.best().trace) r.trace.push_back({static_cast<std::int64_t>(t.iteration), t.log_posterior, t.acceptance_window});
-  if (r.trace.empty()) {
-    const auto& c = run.best();
-    r.trace.push_back({0, c.initial_log_posterior, 0.0});
-    r.trace.push_back({static_cast<std::int64_t>(c.iterations), c.final_log_posterior, c.iterations ? static_cast<double>(c.accepted()) / static_cast<double>(c.iterations) : 0.0});
-  }
   return r;
+}
+
+// The unit rectangles of the last stored posterior samples of the best chain (--samples), for
+// posterior.png: each sample is restored into `m` (the model's own reading of its snapshot), then
+// `m` goes back to the best state.
+std::vector<io::PosteriorWorld> posterior_worlds(IndoorModel& m, const mcmc::RunResult& run) {
+  std::vector<io::PosteriorWorld> out;
+  const auto& samples = run.best().samples;
+  if (samples.empty()) return out;
+  const std::size_t first = samples.size() > io::kPosteriorMaxDrawn ? samples.size() - io::kPosteriorMaxDrawn : 0;
+  for (std::size_t i = first; i < samples.size(); ++i) {
+    m.restore(samples[i].state);
+    auto& pw = out.emplace_back();
+    pw.iteration = static_cast<std::int64_t>(samples[i].iteration);
+    for (const Unit& u : m.scored().world().units()) pw.units.push_back(u.rect.corners());
+  }
+  m.restore(run.best().best_state);
+  return out;
 }
 
 // Fixed unit candidates of each pool (WBU, and RPB with --robot) and the FSU frame.
@@ -179,14 +207,17 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
   const std::string th = in.flags.text("thresholds");
   if (th == "bormann") {
     opts.thresholds = io::Thresholds::bormann();
+  } else if (th == "drawn") {
+    opts.thresholds = io::Thresholds::drawn();
   } else if (th == "strict") {
     // SLAM images (gmapping / Radish PNGs) paint unexplored space light grey: only near-white
     // (>= 250) is free, map_server's dark threshold gives occupied, the rest is unknown.
     opts.thresholds.free_thresh = 5.5 / 255.0;
   } else if (th != "ros") {
-    throw cli::UsageError("--thresholds must be 'strict', 'ros' or 'bormann', got '" + th + "'");
+    throw cli::UsageError("--thresholds must be 'drawn', 'strict', 'ros' or 'bormann', got '" + th + "'");
   }
   auto map = std::make_shared<io::OccupancyMap>(io::load_map(path, opts));
+  for (const auto& w : map->warnings) std::fprintf(stderr, "%s\n", w.c_str());  // also in summary.json
   runtime::io::throw_if_cancelled("indoor: after reading the map");  // large maps: each step takes long
   // Large maps say their cost up front (issue 16, measured at the default iterations: a
   // 10000 x 10000 map took 12-22 min and 3.5 GB, i.e. about 35 bytes per cell).
@@ -233,9 +264,21 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
       return m.semantics()->evidence_db(*sem);
     };
   const std::string source = path.filename().string();
-  setup.write_results = [map, source](const mcmc::RunResult& run, mcmc::Model& best, cli::OutputDir& out) {
+  std::optional<std::pair<Point2, Point2>> route;  // --path start and goal, cells
+  if (in.flags.given("path")) route = parse_path(in.flags.text("path"), *map);
+  setup.write_results = [map, source, route](const mcmc::RunResult& run, mcmc::Model& best, cli::OutputDir& out) {
     auto& m = static_cast<IndoorModel&>(best);
-    io::write_world_outputs(out.dir(), *map, make_result(m, *map, source, run));
+    io::WorldResult result = make_result(m, *map, source, run);
+    result.posterior = posterior_worlds(m, run);
+    nlohmann::ordered_json path_json;
+    if (route) {
+      std::string error;
+      path_json = io::plan_route(result, route->first, route->second, error);
+      if (!error.empty()) std::fprintf(stderr, "indoor: error: --path: %s (path.json says so)\n", error.c_str());
+    }
+    const io::WorldFiles files = io::write_world_outputs(out.dir(), *map, result);
+    if (route) io::write_path_json(out.dir() / "path.json", path_json);
+    if (!files.graph_png_skipped.empty()) std::fprintf(stderr, "indoor: %s\n", files.graph_png_skipped.c_str());
   };
   nlohmann::json extra = nlohmann::json::object();
   extra["map"] = {{"rows", map->rows()}, {"cols", map->cols()}, {"resolution", res},
@@ -257,15 +300,19 @@ cli::DomainSpec domain_spec(const blocks::Binding& b) {
   cli::DomainSpec spec;
   spec.name = binding->domain;
   spec.version = "1.0";
-  spec.description = "semantic indoor maps: typed space units and doors from an occupancy grid";
+  spec.description =
+      "semantic indoor maps: typed space units and doors from an occupancy grid.\n"
+      "Writes world.json, segmentation.png, labels.png, overlay.png, graph.dot/png, world.obj; trace.png with --trace,\n"
+      "posterior.png with --samples N, path.json with --path (docs/indoor_outputs.md)";
   spec.inputs_help = "MAP.(png|pgm|yaml)";
   spec.default_iterations = 10000;
   using K = cli::DomainFlag::Kind;
   spec.flags = {
       {"resolution", "metres per cell (overrides the YAML / PGM comment; default 0.05 for bare images)", "", K::real},
       {"robot", "robot position x,y in metres (map frame): seeds the RPB detector", "", K::text},
-      {"thresholds", "grey values of bare images: strict (>= 250 free, map_server occupied, else unknown), ros (map_server) or bormann (>= 250 free, else occupied); a YAML sets its own", "strict", K::text},
+      {"thresholds", "grey values of bare images (a YAML sets its own): drawn (>= 250 free, < 89 occupied, between: the one grey painting >= 5 % of the image unknown, the other greys occupied: drawn plans' grey walls and SLAM images' unexplored paint both read right), strict (>= 250 free, < 89 occupied, else unknown), ros (map_server) or bormann (>= 250 free, else occupied)", "drawn", K::text},
       {"source-refresh", "proposals between FSU / door candidate refreshes", "200", K::integer},
+      {"path", "X1,Y1 X2,Y2: a route (metres, map frame) from the first point to the second over the door graph, written to path.json and drawn on overlay.png", "", K::text, false, 2},
       {"solid-depth", "occupied cells farther than this (m) from every free cell are classified unexplained: the inside of solid black regions, e.g. a map's outside painted black (0 = eq. 3.7 as is)", "0.5", K::real},
   };
   spec.load = [binding](const cli::DomainInput& in) { return load(binding, in); };

@@ -1,0 +1,32 @@
+// segmentation.png: a room segmentation of the input map from the world's units, in the form
+// room-segmentation benchmarks read (16-bit, 0 = no room, otherwise the unit id; ids are > 0).
+//
+// Fill rule, per cell of the map:
+//   * walls (occupied) and unknown cells stay 0;
+//   * a free cell whose centre lies inside one or more units gets the unit it lies deepest
+//     inside (largest distance from the cell centre to the rectangle's boundary; ties: the
+//     unit with the nearer centre, then the smaller id). Where two units overlap, the boundary between them is then the mid line of
+//     the overlap, a straight line, and a thin unit lying across a wall or along a big room's
+//     edge (whose cells are never deep inside it) cannot cut a strip out of the room;
+//   * every other free cell gets the unit nearest to it through free space: a multi-source
+//     breadth-first search over 4-connected free cells from the cells labelled so far (ties:
+//     the unit reached first in row-major seed order, so the result is deterministic). The
+//     search moves only between edge-adjacent free cells, so it never leaks through the
+//     diagonal gap between two wall pixels that touch at a corner;
+//   * free cells with no path to any unit (a free component without a unit) stay 0.
+#pragma once
+
+#include <filesystem>
+
+#include <opencv2/core/mat.hpp>
+
+#include "stdlib/indoor/io/world_result.h"
+
+namespace ksmc::stdlib::indoor::io {
+
+// Unit id per cell, grid.rows x grid.cols (grid holds Cell values).
+cv::Mat1w render_segmentation(const ClassGrid& grid, const WorldResult& w);
+
+void write_segmentation_png(const std::filesystem::path& path, const ClassGrid& grid, const WorldResult& w);
+
+}  // namespace ksmc::stdlib::indoor::io

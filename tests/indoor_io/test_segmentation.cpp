@@ -1,0 +1,100 @@
+// segmentation.png's fill rule on a tiny synthetic grid: units explain the free cells inside
+// them (deepest unit wins), other free cells go to the nearest unit through free space, walls
+// and unknown cells stay 0, a free pocket no unit reaches stays 0.
+#include <catch2/catch.hpp>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "stdlib/indoor/io/segmentation.h"
+#include "tests/indoor_io/temp_dir.h"
+
+using namespace ksmc::stdlib::indoor;
+using namespace ksmc::stdlib::indoor::io;
+
+namespace {
+
+// 8 x 14 cells. Room A: cols 1-4, room B: cols 6-10, rows 1-5; col 5 is a wall with a door gap
+// at row 3; col 11 a wall; cols 12 (rows 1-2) a free pocket walled off; (2, 8) unknown.
+ClassGrid tiny_map() {
+  ClassGrid g(8, 14, static_cast<std::uint8_t>(Cell::Occupied));
+  for (int r = 1; r <= 5; ++r)
+    for (int c = 1; c <= 10; ++c)
+      if (c != 5) g(r, c) = static_cast<std::uint8_t>(Cell::Free);
+  g(3, 5) = static_cast<std::uint8_t>(Cell::Free);
+  g(2, 8) = static_cast<std::uint8_t>(Cell::Unknown);
+  g(1, 12) = g(2, 12) = static_cast<std::uint8_t>(Cell::Free);
+  return g;
+}
+
+UnitResult unit(int id, double x0, double y0, double x1, double y1) {
+  UnitResult u;
+  u.id = id;
+  u.corners = {Point2{x0, y0}, Point2{x1, y0}, Point2{x1, y1}, Point2{x0, y1}};
+  return u;
+}
+
+}  // namespace
+
+TEST_CASE("segmentation: units, nearest unit through free space, walls and unknown 0") {
+  const ClassGrid g = tiny_map();
+  WorldResult w;
+  w.units = {unit(3, 0.5, 0.5, 4.5, 5.5),    // room A exactly
+             unit(9, 3.6, 0.5, 4.6, 5.5),    // a sliver on A's right edge and the wall
+             unit(7, 5.5, 0.5, 7.5, 5.5)};   // covers only cols 6-7 of room B
+  const cv::Mat1w s = render_segmentation(g, w);
+  REQUIRE(s.rows == 8);
+  REQUIRE(s.cols == 14);
+  for (int r = 1; r <= 5; ++r) {
+    for (int c = 1; c <= 4; ++c) {
+      INFO("cell " << r << "," << c);
+      // Col 4 is 0.5 deep in A and 0.4 deep in the sliver: A wins, the sliver keeps nothing.
+      CHECK(s(r, c) == 3);
+    }
+    CHECK(s(r, 6) == 7);
+    CHECK(s(r, 7) == 7);
+    for (int c = 8; c <= 10; ++c)
+      if (!(r == 2 && c == 8)) CHECK(s(r, c) == 7);  // outside every unit: nearest through free space
+  }
+  CHECK(s(2, 8) == 0);   // unknown
+  CHECK(s(0, 3) == 0);   // wall
+  CHECK(s(1, 5) == 0);   // wall, although inside the sliver and unit 7's rectangle edge
+  CHECK(s(3, 5) == 3);   // door gap: equidistant, the unit seeded first in row-major order
+  CHECK(s(1, 12) == 0);  // a free pocket without a path to any unit
+  CHECK(s(2, 12) == 0);
+  CHECK(cv::countNonZero(s == 9) == 0);
+}
+
+TEST_CASE("segmentation: the deeper of two overlapping units wins, ties go to the smaller id") {
+  ClassGrid g(3, 12, static_cast<std::uint8_t>(Cell::Free));
+  WorldResult w;
+  w.units = {unit(5, -0.5, -0.5, 7.5, 2.5), unit(2, 3.5, -0.5, 11.5, 2.5)};  // overlap: cols 4-7
+  const cv::Mat1w s = render_segmentation(g, w);
+  // Row 1 (1.5 deep in y in both): col 4 is 1.5 deep in unit 5 and 0.5 in unit 2; cols 5 and 6
+  // tie at 1.5 and go to the nearer centre (5 at x = 3.5, 2 at x = 7.5): the boundary is the
+  // overlap's mid line x = 5.5.
+  CHECK(s(1, 3) == 5);
+  CHECK(s(1, 4) == 5);
+  CHECK(s(1, 5) == 5);
+  CHECK(s(1, 6) == 2);
+  CHECK(s(1, 7) == 2);
+  CHECK(s(1, 8) == 2);
+  CHECK(s(0, 4) == 5);  // 0.5 deep in both: nearer centre
+  CHECK(s(0, 7) == 2);
+  // An exact tie in depth and centre distance goes to the smaller id.
+  WorldResult t;
+  t.units = {unit(8, -0.5, -0.5, 4.5, 2.5), unit(4, 1.5, -0.5, 6.5, 2.5)};  // centres x = 2 and 4
+  CHECK(render_segmentation(g, t)(1, 3) == 4);  // x = 3: 1.5 deep in both, 1 from each centre
+}
+
+TEST_CASE("segmentation.png is 16-bit with the unit ids") {
+  ksmc::tests::TempDir dir("segmentation");
+  WorldResult w;
+  w.units = {unit(300, 0.5, 0.5, 4.5, 5.5)};
+  const auto path = dir.path() / "segmentation.png";
+  write_segmentation_png(path, tiny_map(), w);
+  const cv::Mat m = cv::imread(path.string(), cv::IMREAD_UNCHANGED);
+  REQUIRE(m.type() == CV_16UC1);
+  CHECK(m.at<std::uint16_t>(2, 2) == 300);
+  CHECK(m.at<std::uint16_t>(2, 9) == 300);  // through the door gap
+  CHECK(m.at<std::uint16_t>(0, 0) == 0);
+}
