@@ -50,6 +50,25 @@ std::size_t find_weight(const std::string& src, std::size_t from, const std::str
   return std::string::npos;
 }
 
+// A query atom the hard rules force given the evidence (fold_forced_atoms, or a folded
+// block) but which the world has the other way: "Sa(A, B) true, but the hard rules and
+// the evidence force it false". Empty when there is none.
+std::string contradicted_forced_atom(const mln::Grounding& g, const mln::Evidence& world) {
+  const auto& ix = g.index;
+  for (std::size_t p = 0; p < ix.offset.size(); ++p) {
+    if (ix.offset[p] < 0) continue;
+    for (std::int64_t f = 0; f < world.num_atoms(static_cast<std::int32_t>(p)); ++f) {
+      const std::int64_t q = ix.offset[p] + f;
+      if (ix.atom[q] >= 0 || ix.fixed[q] < 0) continue;
+      const bool value = world.get_flat(static_cast<std::int32_t>(p), f) == 1;
+      if (value == (ix.fixed[q] == 1)) continue;
+      return g.atom_name(q) + (value ? " true" : " false") + ", but the hard rules and the evidence force it " +
+             (value ? "false" : "true");
+    }
+  }
+  return {};
+}
+
 }  // namespace
 
 std::string replace_weights(const std::string& source, const std::vector<lower::RuleIr>& rules,
@@ -141,6 +160,12 @@ int run_learn(const lower::MlnIr& ir, const std::string& ksm_path, const std::ve
           given.set_flat(static_cast<std::int32_t>(p), f, mln::Evidence::kUnknown);
       }
       mln::Grounding g = mln::ground(program, *domain, given);
+      const std::string forced = contradicted_forced_atom(g, full);
+      if (!forced.empty()) {
+        err << path << ": error: the world has " << forced << "\n";
+        ++bad_files;
+        continue;
+      }
       mln::TrainingSet ts;
       std::vector<std::uint8_t> world(static_cast<std::size_t>(g.network.num_atoms()), 0);
       for (mln::AtomId a = 0; a < g.network.num_atoms(); ++a) {

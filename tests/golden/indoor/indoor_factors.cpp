@@ -235,6 +235,7 @@ mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) 
   ground_corr_a5f2(g, clause++);
   ground_room_df3c(g, clause++);
   ground_sale_3041(g, clause++);
+  mln::fold_forced_atoms(grounding);
   return grounding;
 }
 
