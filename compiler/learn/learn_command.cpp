@@ -56,7 +56,7 @@ std::size_t find_weight(const std::string& src, std::size_t from, const std::str
 std::string contradicted_forced_atom(const mln::Grounding& g, const mln::Evidence& world) {
   const auto& ix = g.index;
   for (std::size_t p = 0; p < ix.offset.size(); ++p) {
-    if (ix.offset[p] < 0) continue;
+    if (ix.offset[p] < 0 || g.program->predicates[p].auxiliary) continue;
     for (std::int64_t f = 0; f < world.num_atoms(static_cast<std::int32_t>(p)); ++f) {
       const std::int64_t q = ix.offset[p] + f;
       if (ix.atom[q] >= 0 || ix.fixed[q] < 0) continue;
@@ -67,6 +67,27 @@ std::string contradicted_forced_atom(const mln::Grounding& g, const mln::Evidenc
     }
   }
   return {};
+}
+
+// The value of each auxiliary atom (per-formula weights: holds[F](v), equivalent to F by
+// the hard clauses) in the world: the one of its two values that satisfies them.
+void set_auxiliary_atoms(const mln::Grounding& g, std::vector<std::uint8_t>& world) {
+  const auto& net = g.network;
+  const auto& preds = g.program->predicates;
+  const mln::Occurrences occ = mln::build_occurrences(net);
+  for (mln::AtomId a = 0; a < net.num_atoms(); ++a) {
+    if (!preds[static_cast<std::size_t>(net.label(a))].auxiliary) continue;
+    world[a] = 0;
+    for (std::int32_t c : occ.clauses_of(a)) {
+      if (!net.is_hard(c)) continue;
+      bool sat = false;
+      for (mln::Lit l : net.clause(c)) sat = sat || mln::lit_true(l, world[mln::lit_atom(l)]);
+      if (!sat) {
+        world[a] = 1;
+        break;
+      }
+    }
+  }
 }
 
 }  // namespace
@@ -100,6 +121,11 @@ int run_learn(const lower::MlnIr& ir, const std::string& ksm_path, const std::ve
   }
   if (data.empty()) {
     err << "ksmc learn: give the training worlds: ksmc learn FILE.ksm --data a.db [b.db ...]\n";
+    return 2;
+  }
+  if (request.per_formula && request.method != "cll") {
+    err << "ksmc learn: --per-formula needs --method cll (the pseudo-likelihood would hold each formula's "
+           "auxiliary atom fixed while it varies one atom)\n";
     return 2;
   }
   if (!(request.prior_sigma > 0.0)) {
@@ -175,6 +201,7 @@ int run_learn(const lower::MlnIr& ir, const std::string& ksm_path, const std::ve
           if (g.index.offset[i] >= 0 && g.index.offset[i] <= q) p = static_cast<std::int32_t>(i);
         world[a] = full.get_flat(p, q - g.index.offset[p]) == 1 ? 1 : 0;
       }
+      set_auxiliary_atoms(g, world);
       ts.network = std::move(g.network);
       ts.worlds.push_back(std::move(world));
       sets.push_back(std::move(ts));

@@ -19,6 +19,7 @@ struct LearnRequest {
   std::string method = "pll";      // pll | cll
   double prior_sigma = 10.0;       // --l2 SIGMA: standard deviation of the Gaussian prior
   std::string out_path;            // --out FILE (stdout when empty)
+  bool per_formula = false;        // --per-formula: `ir` was rewritten by use_per_formula_weights (cll only)
 };
 
 // Returns 0, 1 on bad data (every bad .db line reported) or unlearnable input, 2 on usage.
