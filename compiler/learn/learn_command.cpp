@@ -36,6 +36,24 @@ std::string format(double v) {
   return s;
 }
 
+// A learned log-odds weight as the probability of a `prob p:` rule: 4 decimals, or as
+// many more (up to 12) as it takes for the file's log-odds to be within 1e-3 of the
+// learned weight (a weight of 12 is p = 0.999994, not 0.9999 = weight 9.2).
+std::string probability_text(double w) {
+  const double p = std::clamp(1.0 / (1.0 + std::exp(-w)), 1e-12, 1.0 - 1e-12);
+  std::string text;
+  for (int digits = 4; digits <= 12; ++digits) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.*f", digits, p);
+    text = buf;
+    const double q = std::strtod(buf, nullptr);
+    if (q > 0.0 && q < 1.0 && std::abs(std::log(q / (1.0 - q)) - w) < 1e-3) break;
+  }
+  while (text.size() > 1 && text.back() == '0') text.pop_back();
+  if (text.back() == '.') text += '0';
+  return text;
+}
+
 bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 // Offset of the weight spelling of a `w x:` / `prob x:` rule head at or after `from`.
@@ -234,8 +252,7 @@ int run_learn(const lower::MlnIr& ir, const std::string& ksm_path, const std::ve
     const auto& rule = ir.rules[static_cast<std::size_t>(param_rule[j])];
     const double w = result.params[j];
     if (rule.kind == lower::RuleIr::WeightKind::Prob) {
-      const double p = std::clamp(1.0 / (1.0 + std::exp(-w)), 1e-4, 1.0 - 1e-4);
-      replacement[static_cast<std::size_t>(param_rule[j])] = format(p);
+      replacement[static_cast<std::size_t>(param_rule[j])] = probability_text(w);
     } else {
       replacement[static_cast<std::size_t>(param_rule[j])] = format(w);
     }
