@@ -4,7 +4,9 @@
 // weights in place of the old ones: only the weight tokens change, layout and comments
 // stay (a `prob p:` rule gets the probability of its learned log-odds).
 // Generative pseudo-log-likelihood by default; `--method cll` maximises the conditional
-// likelihood with the gradient of the exact log Z (runtime/mln/weight_learning.h).
+// likelihood with its exact gradient (observed minus expected clause counts under exact
+// inference; runtime/mln/weight_learning.h). `--per-formula` (cll only) learns one weight
+// per formula under per-formula semantics (compiler/lower/per_formula.h).
 #pragma once
 
 #include <ostream>
