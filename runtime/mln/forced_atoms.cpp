@@ -8,31 +8,57 @@ namespace {
 
 constexpr std::int8_t kFree = -1;
 
-// Unit propagation over the hard clauses; false on a contradiction.
+// The literal a hard clause forces under `value`: -1 when it is satisfied or has two or
+// more open literals, -2 when every literal is false (a contradiction).
+Lit forced_literal(const GroundNetwork& net, std::int32_t c, const std::vector<std::int8_t>& value) {
+  Lit open = -1;
+  std::int32_t open_count = 0;
+  for (Lit l : net.clause(c)) {
+    const std::int8_t v = value[lit_atom(l)];
+    if (v == kFree) {
+      if (++open_count > 1) return -1;
+      open = l;
+    } else if ((v == 1) != lit_negated(l)) {
+      return -1;
+    }
+  }
+  return open_count == 0 ? -2 : open;
+}
+
+// Unit propagation over the hard clauses; false on a contradiction. A few passes over
+// all hard clauses settle the usual networks (indoor: one pass fixes every non-adjacent
+// SaLe, the second finds nothing new) without building occurrence lists; a longer chain
+// of implications continues with a queue over the atoms' hard clauses, so the cost stays
+// linear in the clauses' size.
 bool propagate(const GroundNetwork& net, std::vector<std::int8_t>& value) {
+  std::vector<AtomId> fixed;
+  auto fix = [&](Lit l) {
+    if (net.block_of(lit_atom(l)) >= 0) return false;  // blocks are constraints of their own
+    value[lit_atom(l)] = lit_negated(l) ? 0 : 1;
+    fixed.push_back(lit_atom(l));
+    return true;
+  };
+  constexpr int kPasses = 3;
   bool changed = true;
-  while (changed) {
+  for (int pass = 0; pass < kPasses && changed; ++pass) {
     changed = false;
     for (std::int32_t c = 0; c < net.num_clauses(); ++c) {
-      if (!net.is_hard(c)) continue;
-      Lit open = -1;
-      std::int32_t open_count = 0;
-      bool satisfied = false;
-      for (Lit l : net.clause(c)) {
-        const std::int8_t v = value[lit_atom(l)];
-        if (v == kFree) {
-          ++open_count;
-          open = l;
-        } else if ((v == 1) != lit_negated(l)) {
-          satisfied = true;
-          break;
-        }
-      }
-      if (satisfied || open_count > 1) continue;
-      if (open_count == 0) return false;
-      if (net.block_of(lit_atom(open)) >= 0) continue;  // blocks are constraints of their own
-      value[lit_atom(open)] = lit_negated(open) ? 0 : 1;
-      changed = true;
+      if (!net.is_hard(c) || (pass == 0 && net.clause(c).size() != 1)) continue;
+      const Lit l = forced_literal(net, c, value);
+      if (l == -2) return false;
+      if (l >= 0) changed = fix(l) || changed;
+    }
+  }
+  if (!changed) return true;
+  const Occurrences occ = build_occurrences(net);
+  for (std::size_t head = 0; head < fixed.size(); ++head) {  // every fixed atom, again: idempotent
+    const AtomId a = fixed[head];
+    for (std::int32_t k = occ.offsets[a]; k < occ.offsets[a + 1]; ++k) {
+      const std::int32_t c = occ.clause[k];
+      if (!net.is_hard(c) || (value[a] == 1) != (occ.negated[k] != 0)) continue;  // not made false by a
+      const Lit l = forced_literal(net, c, value);
+      if (l == -2) return false;
+      if (l >= 0) fix(l);
     }
   }
   return true;
@@ -44,10 +70,10 @@ std::int32_t fold_forced_atoms(Grounding& grounding) {
   const GroundNetwork& net = grounding.network;
   const std::int32_t n = net.num_atoms();
   std::vector<std::int8_t> value(static_cast<std::size_t>(n), kFree);
+  if (!propagate(net, value)) return 0;
   bool any = false;
-  for (std::int32_t c = 0; c < net.num_clauses() && !any; ++c)
-    any = net.is_hard(c) && net.clause(c).size() == 1 && net.block_of(lit_atom(net.clause(c)[0])) < 0;
-  if (!any || !propagate(net, value)) return 0;
+  for (AtomId a = 0; a < n && !any; ++a) any = value[a] != kFree;
+  if (!any) return 0;
 
   GroundNetwork out;
   out.set_label_names(net.label_names());

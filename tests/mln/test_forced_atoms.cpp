@@ -79,3 +79,22 @@ TEST_CASE("forced atoms: a contradiction leaves the network for inference to rep
   CHECK(g.network.num_clauses() == 4);
   CHECK_THROWS_AS(exact_inference(g.network), MlnError);
 }
+
+TEST_CASE("forced atoms: a long implication chain (clauses in reverse order) is propagated to its end",
+          "[mln][forced_atoms]") {
+  // x0; x_{i} => x_{i+1}, listed from the end of the chain, so each pass over the clauses
+  // fixes one more atom: past the first passes the queue over occurrences takes over.
+  constexpr std::int32_t n = 12;
+  GroundNetwork net;
+  net.add_atoms(n + 1);
+  for (std::int32_t i = n - 1; i >= 0; --i) net.add_hard_clause(std::vector<Lit>{neg(i), pos(i + 1)});
+  net.add_hard_clause(std::vector<Lit>{pos(0)});
+  net.add_clause(std::vector<Lit>{neg(n), pos(n - 3)}, 0.5);  // satisfied once the chain is fixed
+  net.add_clause(std::vector<Lit>{neg(n)}, 0.8);              // never satisfied: dropped
+  const auto before = exact_inference(net);
+  auto g = identity_grounding(net);
+  CHECK(fold_forced_atoms(g) == n + 1);
+  CHECK(g.network.num_atoms() == 0);
+  for (std::int64_t q = 0; q <= n; ++q) CHECK(g.index.fixed[q] == 1);
+  CHECK(exact_inference(g.network).log_z == Approx(before.log_z).epsilon(1e-12));
+}
