@@ -1,15 +1,26 @@
-# Defines the INTERFACE target ksmc_antlr4_runtime (headers as SYSTEM + the shared runtime).
+# Defines the INTERFACE target ksmc_antlr4_runtime (headers as SYSTEM + the runtime library:
+# the static one when installed and KSMC_STATIC_ANTLR is on, else the shared one).
 # Uses the runtime's CMake config when it has one, else looks for the header dir and library.
 if(TARGET ksmc_antlr4_runtime)
   return()
 endif()
+# The static runtime, when installed, spares every ksmc process the dynamic linking of the
+# shared one (about 0.8 ms of the 5 ms of a `ksmc infer` run on the seed's scene; docs/mln.md).
+option(KSMC_STATIC_ANTLR "Link the ANTLR runtime statically when its static library is installed" ON)
 find_package(antlr4-runtime CONFIG QUIET)
 if(antlr4-runtime_FOUND AND TARGET antlr4_shared AND ANTLR4_INCLUDE_DIR)
   set(_ksmc_antlr_inc "${ANTLR4_INCLUDE_DIR}")
   set(_ksmc_antlr_lib antlr4_shared)
+  if(KSMC_STATIC_ANTLR AND TARGET antlr4_static)
+    set(_ksmc_antlr_lib antlr4_static)
+  endif()
 else()
   find_path(_ksmc_antlr_inc NAMES antlr4-runtime.h PATH_SUFFIXES antlr4-runtime REQUIRED)
-  find_library(_ksmc_antlr_lib NAMES antlr4-runtime REQUIRED)
+  if(KSMC_STATIC_ANTLR)
+    find_library(_ksmc_antlr_lib NAMES libantlr4-runtime.a antlr4-runtime REQUIRED)
+  else()
+    find_library(_ksmc_antlr_lib NAMES antlr4-runtime REQUIRED)
+  endif()
 endif()
 add_library(ksmc_antlr4_runtime INTERFACE)
 # clang rejects misc/InterpreterDataReader.h of the 4.9 runtime (a constructor that

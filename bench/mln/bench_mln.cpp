@@ -6,7 +6,7 @@
 // (tests/mln/floor_plan.h): exact inference by variable elimination, exact MAP by
 // max-product, and incremental re-inference after one unit moved.
 //
-// usage: bench_mln [runs=7]
+// usage: bench_mln [runs=7] [tabletop|indoor|wing60|grid]  (a section name runs only that section)
 #include <algorithm>
 #include <ctime>
 #include <cmath>
@@ -182,10 +182,8 @@ void bench_plan(int runs, const std::string& name, const ksmc::tests::mln::Floor
   std::printf("incremental: %s (plan reused: %d)\n", inc.result().method.c_str(), inc.stats().plans_reused);
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  const int runs = argc > 1 ? std::max(5, std::atoi(argv[1])) : 7;
+// Table-top scenes of 7, 20 and 100 objects (tests/mln/data).
+void bench_tabletop(int runs) {
   namespace tabletop = ksmc_generated::tabletop;
   const Program& program = tabletop::program();
   std::printf("bench_mln: table-top KB (16 rules), median of %d runs, CPU time per call in microseconds\n", runs);
@@ -245,8 +243,23 @@ int main(int argc, char** argv) {
         std::abs(lz.log_z - exact.log_z));
   }
   std::printf("max_err: max |marginal - exact| over atoms (for log Z: |estimate - exact|)\n");
-  bench_indoor(runs);
-  bench_plan(runs, "wing60 (corridor with rooms on both sides)", ksmc::tests::mln::wing_plan(60));
-  bench_plan(runs, "grid 6x10 (every unit adjacent to 4 neighbours)", ksmc::tests::mln::grid_plan(6, 10));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int runs = argc > 1 ? std::max(5, std::atoi(argv[1])) : 7;
+  const std::string only = argc > 2 ? argv[2] : "";
+  if (!only.empty() && only != "tabletop" && only != "indoor" && only != "wing60" && only != "grid") {
+    std::fprintf(stderr, "bench_mln: unknown section '%s' (tabletop, indoor, wing60 or grid)\n", only.c_str());
+    return 2;
+  }
+  if (only.empty() || only == "tabletop") bench_tabletop(runs);
+  if (only.empty() || only == "indoor") bench_indoor(runs);
+  if (only.empty() || only == "wing60")
+    bench_plan(runs, "wing60 (corridor with rooms on both sides)", ksmc::tests::mln::wing_plan(60));
+  if (only.empty() || only == "grid")
+    bench_plan(runs, "grid 6x10 (every unit adjacent to 4 neighbours)", ksmc::tests::mln::grid_plan(6, 10));
   return 0;
 }
+

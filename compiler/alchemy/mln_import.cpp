@@ -112,7 +112,7 @@ struct PredInfo {
 
 class Translator {
  public:
-  Translator(const std::string& path) : path_(path) {}
+  Translator(const std::string& path, bool per_formula) : path_(path), per_formula_(per_formula) {}
 
   ImportResult run(const std::string& text, const std::vector<std::string>& queries) {
     std::istringstream in(strip_comments(text));
@@ -138,7 +138,10 @@ class Translator {
     if (!errors_.empty()) return r;
     std::ostringstream out;
     out << "// Imported from " << std::filesystem::path(path_).filename().string()
-        << " by `ksmc import-mln` (Alchemy syntax; weights split over CNF clauses as in Alchemy).\n";
+        << " by `ksmc import-mln` (Alchemy syntax; "
+        << (per_formula_ ? "per-formula weights: a formula of several CNF clauses puts its weight on an auxiliary atom holds_k equivalent to it"
+                         : "weights split over CNF clauses as in Alchemy")
+        << ").\n";
     out << "domain " << domain_name() << ";\n\n";
     for (const auto& t : type_order_) {
       out << "type " << t;
@@ -161,7 +164,7 @@ class Translator {
       }
       out << ");" << (dropped ? "  // '!' dropped: exclusive arguments constrain query predicates only" : "") << "\n";
     }
-    out << "\n" << rules_.str();
+    out << aux_decls_.str() << "\n" << rules_.str();
     r.ksm = out.str();
     return r;
   }
@@ -266,6 +269,7 @@ class Translator {
   }
 
   void formula_statement() {
+    const Token start = peek();
     std::string weight;
     if (peek().kind == Token::Number) weight = next().text;
     auto f = iff();
@@ -277,12 +281,67 @@ class Translator {
     }
     if (sym("=")) fail(peek(), "equality ('=') is not supported");
     if (peek().kind != Token::End) fail(peek(), "unexpected " + describe(peek()) + " after the formula");
+    if (!hard && per_formula_ && !one_clause(*f, true)) {
+      per_formula_rule(*f, weight.empty() ? "0" : weight, start);
+      return;
+    }
     if (hard) rules_ << "hard ";
     else if (weight.empty()) rules_ << "w 0: ";  // Alchemy: weight to be learned
     else rules_ << "w " << weight << ": ";
     rules_ << print(*f, true) << ".";
     if (!hard && weight.empty()) rules_ << "  // no weight in the .mln: to be learned";
     rules_ << "\n";
+  }
+
+  // True when the formula (under `positive` polarity) converts to a single CNF clause.
+  static bool one_clause(const Node& n, bool positive) {
+    switch (n.kind) {
+      case Node::Atom: return true;
+      case Node::Not: return one_clause(*n.a, !positive);
+      case Node::And: return !positive && one_clause(*n.a, false) && one_clause(*n.b, false);
+      case Node::Or: return positive && one_clause(*n.a, true) && one_clause(*n.b, true);
+      case Node::Imp: return positive && one_clause(*n.a, false) && one_clause(*n.b, true);
+      case Node::Exist: return positive && one_clause(*n.a, true);
+      case Node::Iff: return false;
+    }
+    return false;
+  }
+
+  // The free variables of `n` in order of appearance, with their types (from the
+  // argument positions they fill); `EXIST` is refused.
+  void free_variables(const Node& n, const Token& at, std::vector<std::pair<std::string, std::string>>& out) const {
+    if (n.kind == Node::Exist)
+      fail(at, "--per-formula: EXIST in a formula of several CNF clauses is not supported");
+    if (n.kind != Node::Atom) {
+      if (n.a) free_variables(*n.a, at, out);
+      if (n.b) free_variables(*n.b, at, out);
+      return;
+    }
+    const auto& types = preds_.at(n.pred).types;
+    for (std::size_t k = 0; k < n.args.size(); ++k) {
+      if (std::isupper(static_cast<unsigned char>(n.args[k][0]))) continue;
+      bool seen = false;
+      for (const auto& v : out) seen = seen || v.first == n.args[k];
+      if (!seen) out.emplace_back(n.args[k], types[k]);
+    }
+  }
+
+  // Per-formula weight through an auxiliary query atom equivalent to the formula:
+  //   query holds_k(types);  hard holds_k(vars) <=> (F).  w W: holds_k(vars).
+  void per_formula_rule(const Node& f, const std::string& weight, const Token& at) {
+    std::vector<std::pair<std::string, std::string>> vars;
+    free_variables(f, at, vars);
+    if (vars.empty()) fail(at, "--per-formula: a formula without variables needs no auxiliary atom; write it as one clause");
+    std::string name;
+    do name = "holds_" + std::to_string(++aux_count_); while (preds_.count(name));
+    std::string decl, args;
+    for (std::size_t k = 0; k < vars.size(); ++k) {
+      decl += (k ? ", " : "") + vars[k].second;
+      args += (k ? ", " : "") + vars[k].first;
+    }
+    aux_decls_ << "query " << name << "(" << decl << ");  // auxiliary: " << name << " <=> the formula\n";
+    rules_ << "hard " << name << "(" << args << ") <=> (" << print(f, true) << ").\n";
+    rules_ << "w " << weight << ": " << name << "(" << args << ").\n";
   }
 
   std::unique_ptr<Node> binary(Node::Kind k, std::unique_ptr<Node> a, std::unique_ptr<Node> b) {
@@ -423,18 +482,21 @@ class Translator {
   std::vector<std::string> pred_order_, type_order_;
   std::map<std::string, std::vector<std::string>> enumerated_;
   std::map<std::string, std::string> constant_type_;
-  std::ostringstream rules_;
+  std::ostringstream rules_, aux_decls_;
   std::vector<std::string> errors_;
+  bool per_formula_ = false;
+  int aux_count_ = 0;
 };
 
 }  // namespace
 
-ImportResult import_mln(const std::string& text, const std::string& path, const std::vector<std::string>& queries) {
-  return Translator(path).run(text, queries);
+ImportResult import_mln(const std::string& text, const std::string& path, const std::vector<std::string>& queries,
+                        bool per_formula) {
+  return Translator(path, per_formula).run(text, queries);
 }
 
 int run_import(const std::vector<std::string>& files, const std::vector<std::string>& queries,
-               const std::string& out_path, std::ostream& out, std::ostream& err) {
+               const std::string& out_path, std::ostream& out, std::ostream& err, bool per_formula) {
   if (files.size() != 1) {
     err << "ksmc import-mln: give one FILE.mln\n";
     return 2;
@@ -446,7 +508,7 @@ int run_import(const std::vector<std::string>& files, const std::vector<std::str
   }
   std::stringstream buffer;
   buffer << in.rdbuf();
-  const ImportResult r = import_mln(buffer.str(), files.front(), queries);
+  const ImportResult r = import_mln(buffer.str(), files.front(), queries, per_formula);
   for (const auto& e : r.errors) err << e << "\n";
   if (!r.errors.empty()) {
     err << "ksmc import-mln: " << r.errors.size() << (r.errors.size() == 1 ? " error" : " errors") << "\n";

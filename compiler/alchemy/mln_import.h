@@ -13,7 +13,10 @@
 // it every predicate is a query predicate (open world, evidence may still fix atoms).
 //
 // Weights: ksmc splits a formula's weight equally over its CNF clauses, as Alchemy does
-// (docs/mln.md, "Weight semantics").
+// (docs/mln.md, "Weight semantics"). With `per_formula` (pracmln's semantics: the weight
+// counts once when the whole formula holds), a soft formula of several CNF clauses is
+// written as an auxiliary query predicate equivalent to it, carrying the weight:
+//   query holds_1(person);  hard holds_1(x) <=> (F).  w 1.5: holds_1(x).
 #pragma once
 
 #include <ostream>
@@ -28,11 +31,12 @@ struct ImportResult {
 };
 
 // `path` names the file in messages and gives the domain name (its stem).
-ImportResult import_mln(const std::string& text, const std::string& path, const std::vector<std::string>& queries);
+ImportResult import_mln(const std::string& text, const std::string& path, const std::vector<std::string>& queries,
+                        bool per_formula = false);
 
 // The command: reads `path`, writes the .ksm to `out_path` (stdout when empty).
 // Returns 0, 1 on errors in the file (all reported), 2 on bad usage.
 int run_import(const std::vector<std::string>& files, const std::vector<std::string>& queries,
-               const std::string& out_path, std::ostream& out, std::ostream& err);
+               const std::string& out_path, std::ostream& out, std::ostream& err, bool per_formula = false);
 
 }  // namespace ksmc::compiler::alchemy

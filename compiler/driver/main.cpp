@@ -23,6 +23,7 @@
 #include "compiler/learn/learn_command.h"
 #include "compiler/lower/dump_ir.h"
 #include "compiler/lower/lower_mln.h"
+#include "compiler/lower/per_formula.h"
 #include "runtime/io/atomic_file.h"
 
 #ifndef KSMC_VERSION
@@ -46,6 +47,7 @@ struct Invocation {
   learn::LearnRequest learn;
   std::string keep_dir;     // build --keep
   bool verbose = false;     // build --verbose
+  bool per_formula = false; // infer / learn / import-mln --per-formula
   int jobs = 0;             // build -j
   std::filesystem::path executable;
 };
@@ -212,13 +214,22 @@ int cmd_emit(Invocation& inv) {
   return kExitOk;
 }
 
+// --per-formula: one weight per formula instead of w / k per CNF clause (lower/per_formula.h).
+bool per_formula(const Invocation& inv, lower::MlnIr& ir) {
+  if (!inv.per_formula) return true;
+  const std::string error = lower::use_per_formula_weights(ir);
+  if (error.empty()) return true;
+  std::cerr << error << "\n";
+  return false;
+}
+
 int cmd_infer(Invocation& inv) {
   if (inv.files.size() != 1 || inv.infer.evidence_path.empty()) {
     std::cerr << "ksmc infer: give one FILE and --evidence E.db\n";
     return kExitUsage;
   }
   lower::MlnIr ir;
-  if (!lower_file(inv.files.front(), inv, ir)) return kExitErrors;
+  if (!lower_file(inv.files.front(), inv, ir) || !per_formula(inv, ir)) return kExitErrors;
   return infer::run_infer(ir, inv.infer, std::cout, std::cerr);
 }
 
@@ -228,8 +239,9 @@ int cmd_learn(Invocation& inv) {
     return kExitUsage;
   }
   lower::MlnIr ir;
-  if (!lower_file(inv.files.front(), inv, ir)) return kExitErrors;
+  if (!lower_file(inv.files.front(), inv, ir) || !per_formula(inv, ir)) return kExitErrors;
   inv.learn.out_path = inv.out_dir;
+  inv.learn.per_formula = inv.per_formula;
   if (inv.infer.method != "auto") inv.learn.method = inv.infer.method;
   return learn::run_learn(ir, inv.files.front(), std::vector<std::string>(inv.files.begin() + 1, inv.files.end()),
                           inv.learn, std::cout, std::cerr);
@@ -266,15 +278,17 @@ const std::vector<Command>& commands() {
       {"fmt", "ksmc fmt [--in-place | --check] FILE...", "print FILE in canonical layout (comments kept)", cmd_fmt},
       {"emit", "ksmc emit [--dump-ir] [--dump-domain-ir] FILE --out DIR",
        "write the generated C++ of FILE: DIR/<domain>_factors.{h,cpp}, <domain>_model.{h,cpp}, <domain>_main.cpp", cmd_emit},
-      {"infer", "ksmc infer FILE --evidence E.db [--query p,q] [--method exact|gibbs|mcsat|map|auto] [--seed N]",
+      {"infer", "ksmc infer FILE --evidence E.db [--query p,q] [--method exact|gibbs|mcsat|map|auto] [--seed N] [--per-formula]",
        "Markov logic inference without compiling: prints `pred(args) probability`, sorted", cmd_infer},
       {"build", "ksmc build FILE -o BIN [-I DIR] [--keep DIR] [--verbose] [-j N]",
        "compile FILE into the domain binary BIN against the installed ksmc (needs CMake and a C++20 compiler)",
        cmd_build},
-      {"import-mln", "ksmc import-mln FILE.mln [--query p,q] [--out FILE.ksm]",
+      {"import-mln", "ksmc import-mln FILE.mln [--query p,q] [--per-formula] [--out FILE.ksm]",
        "translate an Alchemy rule base into .ksm (the --query predicates are query, the rest evidence)",
-       [](Invocation& inv) { return alchemy::run_import(inv.files, inv.infer.queries, inv.out_dir, std::cout, std::cerr); }},
-      {"learn", "ksmc learn FILE.ksm --data A.db [B.db ...] [--method pll|cll] [--l2 SIGMA] [--out FILE]",
+       [](Invocation& inv) {
+         return alchemy::run_import(inv.files, inv.infer.queries, inv.out_dir, std::cout, std::cerr, inv.per_formula);
+       }},
+      {"learn", "ksmc learn FILE.ksm --data A.db [B.db ...] [--method pll|cll] [--l2 SIGMA] [--per-formula] [--out FILE]",
        "learn FILE's soft rule weights from training worlds; writes FILE with the new weights (layout kept)",
        cmd_learn},
       {"kit", "ksmc kit FILE", "print `<domain> <kit>`: FILE's domain name and the stdlib kit that runs it", cmd_kit},
@@ -312,6 +326,8 @@ void print_help(std::ostream& out) {
       << "  --max-ground-clauses N  infer: refuse a grounding estimated above N clauses (default 50,000,000)\n"
       << "  --data        learn: the files that follow are training worlds (.db)\n"
       << "  --l2 SIGMA    learn: standard deviation of the Gaussian prior on the weights (default 10)\n"
+      << "  --per-formula infer, learn, import-mln: a soft formula's weight counts once when the whole formula\n"
+      << "                holds (default: split as w/k over its k CNF clauses, as Alchemy does)\n"
       << "  --help        this text\n"
       << "  --version     print the version\n\n"
       << "exit status: 0 ok, 1 errors in the input, 2 bad usage, 3 internal compiler error\n";
@@ -384,6 +400,8 @@ int run(int argc, char** argv) {
       inv.check_only = true;
     } else if (a == "--verbose") {
       inv.verbose = true;
+    } else if (a == "--per-formula") {
+      inv.per_formula = true;
     } else if (a == "--data") {
       // learn: the files that follow are training worlds (they are positional anyway)
     } else if (a == "--list-passes") {

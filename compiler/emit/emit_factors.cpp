@@ -332,7 +332,8 @@ class FactorsEmitter {
       << "  mln::FactorContext g(grounding, evidence);\n"
       << "  std::int32_t clause = 0;  // clause index in program() order\n";
     for (const auto& c : p_.clauses) o << "  ground_" << cpp_identifier(c.name) << "(g, clause++);\n";
-    o << "  return grounding;\n"
+    o << "  mln::fold_forced_atoms(grounding);\n"
+      << "  return grounding;\n"
       << "}\n\n";
   }
 

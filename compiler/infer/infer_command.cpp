@@ -207,7 +207,7 @@ int run_infer(const lower::MlnIr& ir, const InferRequest& request, std::ostream&
 
     std::vector<std::string> lines;
     for (std::size_t p = 0; p < program.predicates.size(); ++p) {
-      if (!program.predicates[p].query || !wanted[p]) continue;
+      if (!program.predicates[p].query || program.predicates[p].auxiliary || !wanted[p]) continue;
       const std::int64_t n = evidence.num_atoms(static_cast<std::int32_t>(p));
       const std::int64_t off = g.index.offset[p];
       for (std::int64_t f = 0; f < n; ++f) {

@@ -36,6 +36,24 @@ std::string format(double v) {
   return s;
 }
 
+// A learned log-odds weight as the probability of a `prob p:` rule: 4 decimals, or as
+// many more (up to 12) as it takes for the file's log-odds to be within 1e-3 of the
+// learned weight (a weight of 12 is p = 0.999994, not 0.9999 = weight 9.2).
+std::string probability_text(double w) {
+  const double p = std::clamp(1.0 / (1.0 + std::exp(-w)), 1e-12, 1.0 - 1e-12);
+  std::string text;
+  for (int digits = 4; digits <= 12; ++digits) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.*f", digits, p);
+    text = buf;
+    const double q = std::strtod(buf, nullptr);
+    if (q > 0.0 && q < 1.0 && std::abs(std::log(q / (1.0 - q)) - w) < 1e-3) break;
+  }
+  while (text.size() > 1 && text.back() == '0') text.pop_back();
+  if (text.back() == '.') text += '0';
+  return text;
+}
+
 bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 // Offset of the weight spelling of a `w x:` / `prob x:` rule head at or after `from`.
@@ -48,6 +66,46 @@ std::size_t find_weight(const std::string& src, std::size_t from, const std::str
     if (src.compare(k, spelling.size(), spelling) == 0) return k;
   }
   return std::string::npos;
+}
+
+// A query atom the hard rules force given the evidence (fold_forced_atoms, or a folded
+// block) but which the world has the other way: "Sa(A, B) true, but the hard rules and
+// the evidence force it false". Empty when there is none.
+std::string contradicted_forced_atom(const mln::Grounding& g, const mln::Evidence& world) {
+  const auto& ix = g.index;
+  for (std::size_t p = 0; p < ix.offset.size(); ++p) {
+    if (ix.offset[p] < 0 || g.program->predicates[p].auxiliary) continue;
+    for (std::int64_t f = 0; f < world.num_atoms(static_cast<std::int32_t>(p)); ++f) {
+      const std::int64_t q = ix.offset[p] + f;
+      if (ix.atom[q] >= 0 || ix.fixed[q] < 0) continue;
+      const bool value = world.get_flat(static_cast<std::int32_t>(p), f) == 1;
+      if (value == (ix.fixed[q] == 1)) continue;
+      return g.atom_name(q) + (value ? " true" : " false") + ", but the hard rules and the evidence force it " +
+             (value ? "false" : "true");
+    }
+  }
+  return {};
+}
+
+// The value of each auxiliary atom (per-formula weights: holds[F](v), equivalent to F by
+// the hard clauses) in the world: the one of its two values that satisfies them.
+void set_auxiliary_atoms(const mln::Grounding& g, std::vector<std::uint8_t>& world) {
+  const auto& net = g.network;
+  const auto& preds = g.program->predicates;
+  const mln::Occurrences occ = mln::build_occurrences(net);
+  for (mln::AtomId a = 0; a < net.num_atoms(); ++a) {
+    if (!preds[static_cast<std::size_t>(net.label(a))].auxiliary) continue;
+    world[a] = 0;
+    for (std::int32_t c : occ.clauses_of(a)) {
+      if (!net.is_hard(c)) continue;
+      bool sat = false;
+      for (mln::Lit l : net.clause(c)) sat = sat || mln::lit_true(l, world[mln::lit_atom(l)]);
+      if (!sat) {
+        world[a] = 1;
+        break;
+      }
+    }
+  }
 }
 
 }  // namespace
@@ -81,6 +139,11 @@ int run_learn(const lower::MlnIr& ir, const std::string& ksm_path, const std::ve
   }
   if (data.empty()) {
     err << "ksmc learn: give the training worlds: ksmc learn FILE.ksm --data a.db [b.db ...]\n";
+    return 2;
+  }
+  if (request.per_formula && request.method != "cll") {
+    err << "ksmc learn: --per-formula needs --method cll (the pseudo-likelihood would hold each formula's "
+           "auxiliary atom fixed while it varies one atom)\n";
     return 2;
   }
   if (!(request.prior_sigma > 0.0)) {
@@ -141,6 +204,12 @@ int run_learn(const lower::MlnIr& ir, const std::string& ksm_path, const std::ve
           given.set_flat(static_cast<std::int32_t>(p), f, mln::Evidence::kUnknown);
       }
       mln::Grounding g = mln::ground(program, *domain, given);
+      const std::string forced = contradicted_forced_atom(g, full);
+      if (!forced.empty()) {
+        err << path << ": error: the world has " << forced << "\n";
+        ++bad_files;
+        continue;
+      }
       mln::TrainingSet ts;
       std::vector<std::uint8_t> world(static_cast<std::size_t>(g.network.num_atoms()), 0);
       for (mln::AtomId a = 0; a < g.network.num_atoms(); ++a) {
@@ -150,6 +219,7 @@ int run_learn(const lower::MlnIr& ir, const std::string& ksm_path, const std::ve
           if (g.index.offset[i] >= 0 && g.index.offset[i] <= q) p = static_cast<std::int32_t>(i);
         world[a] = full.get_flat(p, q - g.index.offset[p]) == 1 ? 1 : 0;
       }
+      set_auxiliary_atoms(g, world);
       ts.network = std::move(g.network);
       ts.worlds.push_back(std::move(world));
       sets.push_back(std::move(ts));
@@ -182,8 +252,7 @@ int run_learn(const lower::MlnIr& ir, const std::string& ksm_path, const std::ve
     const auto& rule = ir.rules[static_cast<std::size_t>(param_rule[j])];
     const double w = result.params[j];
     if (rule.kind == lower::RuleIr::WeightKind::Prob) {
-      const double p = std::clamp(1.0 / (1.0 + std::exp(-w)), 1e-4, 1.0 - 1e-4);
-      replacement[static_cast<std::size_t>(param_rule[j])] = format(p);
+      replacement[static_cast<std::size_t>(param_rule[j])] = probability_text(w);
     } else {
       replacement[static_cast<std::size_t>(param_rule[j])] = format(w);
     }

@@ -4,7 +4,9 @@
 // weights in place of the old ones: only the weight tokens change, layout and comments
 // stay (a `prob p:` rule gets the probability of its learned log-odds).
 // Generative pseudo-log-likelihood by default; `--method cll` maximises the conditional
-// likelihood with the gradient of the exact log Z (runtime/mln/weight_learning.h).
+// likelihood with its exact gradient (observed minus expected clause counts under exact
+// inference; runtime/mln/weight_learning.h). `--per-formula` (cll only) learns one weight
+// per formula under per-formula semantics (compiler/lower/per_formula.h).
 #pragma once
 
 #include <ostream>
@@ -19,6 +21,7 @@ struct LearnRequest {
   std::string method = "pll";      // pll | cll
   double prior_sigma = 10.0;       // --l2 SIGMA: standard deviation of the Gaussian prior
   std::string out_path;            // --out FILE (stdout when empty)
+  bool per_formula = false;        // --per-formula: `ir` was rewritten by use_per_formula_weights (cll only)
 };
 
 // Returns 0, 1 on bad data (every bad .db line reported) or unlearnable input, 2 on usage.

@@ -100,8 +100,9 @@ class JunctionTree {
     }
   }
 
-  // Sum-product: returns log Z, writes marginals.
-  double sum_product(std::vector<double>& marg) {
+  // Sum-product: returns log Z, writes marginals (and, if given, the probability that
+  // each of the component's clauses is satisfied, into (*clause_prob)[clause]).
+  double sum_product(std::vector<double>& marg, std::vector<double>* clause_prob) {
     build_potentials();
     const auto n = static_cast<std::size_t>(plan_.num_vars());
     Tables beta = psi_;
@@ -152,6 +153,7 @@ class JunctionTree {
       if (total < 1e-100 || total > 1e100)  // keep the scale of the children's messages in range
         for (double& x : beta[r]) x /= total;
       set_marginal(v, acc, total, marg);
+      if (clause_prob) clause_probabilities(r, beta[r], *clause_prob);
     }
     return log_z;
   }
@@ -243,6 +245,41 @@ class JunctionTree {
     return std::log(m);
   }
 
+  // A literal of a clause as a test on a cluster's table digits.
+  struct Test {
+    std::int32_t pos, value;
+    bool negated;
+  };
+  void clause_tests(std::size_t cluster, std::int32_t c, std::vector<Test>& tests) const {
+    tests.clear();
+    for (Lit l : net_.clause(c)) {
+      const auto li = local(lit_atom(l));
+      tests.push_back({position(cluster, atom_var_[li]), atom_val_[li], lit_negated(l)});
+    }
+  }
+  template <typename Digits>
+  static bool satisfied(const std::vector<Test>& tests, const Digits& digit) {
+    for (const auto& t : tests)
+      if ((digit[t.pos] == t.value) != t.negated) return true;
+    return false;
+  }
+
+  // P(clause satisfied) of the clauses assigned to cluster i, from its calibrated belief.
+  void clause_probabilities(std::size_t i, std::span<const double> belief, std::vector<double>& out) {
+    std::vector<Test> tests;
+    const std::vector<std::int64_t> none(cards_[i].size(), 0);
+    for (std::int32_t c : plan_.clauses[i]) {
+      clause_tests(i, c, tests);
+      double sat = 0.0, all = 0.0;
+      walk(cards_[i], none, [&](std::int64_t idx, std::int64_t, const auto& digit) {
+        const double b = belief[static_cast<std::size_t>(idx)];
+        all += b;
+        if (satisfied(tests, digit)) sat += b;
+      });
+      out[static_cast<std::size_t>(c)] = all > 0.0 ? std::clamp(sat / all, 0.0, 1.0) : 0.0;
+    }
+  }
+
   // psi of each cluster: the product of its clauses' factors, each scaled to max 1 (a
   // soft clause of weight w >= 0 is 1 when satisfied and e^-w when not, its w going to
   // the cluster's log scale; w < 0: e^w when satisfied, 1 when not; hard: 1 or 0), so
@@ -252,21 +289,13 @@ class JunctionTree {
     psi_ = Tables{};
     psi_.data.reserve(static_cast<std::size_t>(std::accumulate(size_.begin(), size_.end(), std::int64_t{0})));
     psi_scale_.assign(n, 0.0);
-    struct Test {
-      std::int32_t pos, value;
-      bool negated;
-    };
     std::vector<Test> tests;
     std::vector<std::int64_t> none;
     for (std::size_t i = 0; i < n; ++i) {
       psi_.add(size_[i], 1.0);
       auto table = psi_[i];
       for (std::int32_t c : plan_.clauses[i]) {
-        tests.clear();
-        for (Lit l : net_.clause(c)) {
-          const auto li = local(lit_atom(l));
-          tests.push_back({position(i, atom_var_[li]), atom_val_[li], lit_negated(l)});
-        }
+        clause_tests(i, c, tests);
         double if_sat = 1.0, if_unsat = 0.0;
         if (!net_.is_hard(c)) {
           const double w = net_.weight(c);
@@ -280,11 +309,7 @@ class JunctionTree {
         }
         none.assign(cards_[i].size(), 0);
         walk(cards_[i], none, [&](std::int64_t idx, std::int64_t, const auto& digit) {
-          bool sat = false;
-          for (const auto& t : tests) {
-            if ((digit[t.pos] == t.value) != t.negated) { sat = true; break; }
-          }
-          table[static_cast<std::size_t>(idx)] *= sat ? if_sat : if_unsat;
+          table[static_cast<std::size_t>(idx)] *= satisfied(tests, digit) ? if_sat : if_unsat;
         });
       }
     }
@@ -473,12 +498,13 @@ bool rebind_plan(const GroundNetwork& net, const Component& from, const Componen
 }
 
 double eliminate_component(const GroundNetwork& net, const Component& comp, const EliminationPlan& plan,
-                           std::vector<double>& marg, std::vector<std::uint8_t>* mode, double* mode_lw) {
+                           std::vector<double>& marg, std::vector<std::uint8_t>* mode, double* mode_lw,
+                           std::vector<double>* clause_prob) {
   if (static_cast<std::size_t>(plan.num_vars()) != plan.order.size())
     throw MlnError("exact inference: elimination plan incomplete (a cluster exceeded the table limit)");
   io::throw_if_cancelled("variable elimination");
   JunctionTree jt(net, comp, plan);
-  const double log_z = jt.sum_product(marg);
+  const double log_z = jt.sum_product(marg, clause_prob);
   if (mode) jt.max_product(*mode, mode_lw);
   return log_z;
 }

@@ -61,10 +61,12 @@ bool rebind_plan(const GroundNetwork& net, const Component& from, const Componen
 
 // Marginals (written into marg[atom], global ids) and the component's log Z (without
 // the network constant). If `mode` is given, also a most probable state of the
-// component into (*mode)[atom] and its log-weight into *mode_lw. Throws MlnError if no
-// state satisfies the hard clauses and blocks.
+// component into (*mode)[atom] and its log-weight into *mode_lw. If `clause_prob` is
+// given, the probability that each clause of the component is satisfied goes into
+// (*clause_prob)[clause] (global ids; from the calibrated belief of the clause's
+// cluster). Throws MlnError if no state satisfies the hard clauses and blocks.
 double eliminate_component(const GroundNetwork& net, const Component& comp, const EliminationPlan& plan,
                            std::vector<double>& marg, std::vector<std::uint8_t>* mode = nullptr,
-                           double* mode_lw = nullptr);
+                           double* mode_lw = nullptr, std::vector<double>* clause_prob = nullptr);
 
 }  // namespace ksmc::runtime::mln

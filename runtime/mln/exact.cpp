@@ -24,7 +24,7 @@ std::string describe_labels(const GroundNetwork& net, std::span<const AtomId> at
 }
 
 // A component of one free atom outside any block: closed form from its unit clauses.
-double single_atom(const GroundNetwork& net, const Component& comp, std::vector<double>& marg,
+double single_atom_solve(const GroundNetwork& net, const Component& comp, std::vector<double>& marg,
                    std::vector<std::uint8_t>* mode, double* mode_lw) {
   const AtomId a = comp.atoms[0];
   double s0 = 0.0, s1 = 0.0;
@@ -53,6 +53,16 @@ double single_atom(const GroundNetwork& net, const Component& comp, std::vector<
   return mx + std::log(e0 + e1);
 }
 
+double single_atom(const GroundNetwork& net, const Component& comp, std::vector<double>& marg,
+                   std::vector<std::uint8_t>* mode, double* mode_lw, std::vector<double>* clause_prob) {
+  const double log_z = single_atom_solve(net, comp, marg, mode, mode_lw);
+  if (clause_prob) {  // unit clauses
+    const double p = marg[comp.atoms[0]];
+    for (std::int32_t c : comp.clauses) (*clause_prob)[c] = lit_negated(net.clause(c)[0]) ? 1.0 - p : p;
+  }
+  return log_z;
+}
+
 // Enumerates components of one network in place (global atom/clause ids), reusing
 // its buffers across components: no per-component network copies.
 class Enumerator {
@@ -74,7 +84,14 @@ class Enumerator {
 
   // Marginals go to marg[atom] (global ids); returns the component's log Z (no constant).
   // If mode != nullptr, writes a most probable state of the component into (*mode)[atom].
-  double run(const Component& comp, std::vector<double>& marg, std::vector<std::uint8_t>* mode, double* mode_lw) {
+  // If clause_prob != nullptr, writes P(clause satisfied) of the component's clauses.
+  double run(const Component& comp, std::vector<double>& marg, std::vector<std::uint8_t>* mode, double* mode_lw,
+             std::vector<double>* clause_prob = nullptr) {
+    want_clauses_ = clause_prob != nullptr;
+    if (want_clauses_ && cacc_.empty()) {
+      cacc_.assign(cnt_.size(), 0.0);
+      csince_.assign(cnt_.size(), 0.0);
+    }
     double ref = 0.0;
     for (std::int32_t c : comp.clauses)
       if (!hard_[c]) ref += std::max(w_[c], 0.0);
@@ -106,6 +123,8 @@ class Enumerator {
       enumerate(comp, shift, false);
     }
     for (AtomId a : comp.atoms) marg[a] = std::clamp(acc_[a] / z_, 0.0, 1.0);
+    if (clause_prob)
+      for (std::int32_t c : comp.clauses) (*clause_prob)[c] = std::clamp(cacc_[c] / z_, 0.0, 1.0);
     if (mode) {
       for (std::size_t i = 0; i < comp.atoms.size(); ++i) (*mode)[comp.atoms[i]] = best_[i];
       if (mode_lw) *mode_lw = max_s_;
@@ -123,9 +142,11 @@ class Enumerator {
       if ((nv != 0) != (occ_.negated[k] != 0)) {
         if (cnt_[c]++ == 0) {
           if (hard_[c]) --violated_; else s_ += w_[c];
+          if (want_clauses_) csince_[c] = z_;
         }
       } else if (--cnt_[c] == 0) {
         if (hard_[c]) ++violated_; else s_ -= w_[c];
+        if (want_clauses_) cacc_[c] += z_ - csince_[c];
       }
     }
   }
@@ -149,6 +170,7 @@ class Enumerator {
       cnt_[c] = k;
       if (k > 0) { if (!hard_[c]) s_ += w_[c]; }
       else if (hard_[c]) ++violated_;
+      if (want_clauses_) cacc_[c] = csince_[c] = 0.0;
     }
     digit_.assign(static_cast<std::size_t>(nd), 0);
     dir_.assign(static_cast<std::size_t>(nd), 1);
@@ -184,6 +206,9 @@ class Enumerator {
     }
     for (AtomId a : comp.atoms)
       if (val_[a]) acc_[a] += z_ - since_[a];
+    if (want_clauses_)
+      for (std::int32_t c : comp.clauses)
+        if (cnt_[c] > 0) cacc_[c] += z_ - csince_[c];
   }
 
   std::string hard_origins(const Component& comp) const {
@@ -200,7 +225,8 @@ class Enumerator {
   const GroundNetwork& net_;
   const Occurrences occ_;
   std::vector<std::uint8_t> val_, hard_, best_;
-  std::vector<double> acc_, since_, w_;
+  std::vector<double> acc_, since_, w_, cacc_, csince_;
+  bool want_clauses_ = false;
   std::vector<std::int32_t> cnt_, radix_, first_, digit_, dir_, focus_;
   std::vector<AtomId> datoms_;
   std::int32_t nplain_ = 0, violated_ = 0;
@@ -284,21 +310,22 @@ std::string ExactSummary::describe() const {
 }
 
 double solve_components(const GroundNetwork& net, std::span<const Component> comps, std::span<const ExactPlan> plans,
-                        std::vector<double>& marginals, std::vector<std::uint8_t>* mode) {
+                        std::vector<double>& marginals, std::vector<std::uint8_t>* mode,
+                        std::vector<double>* clause_prob) {
   double log_z = 0.0;
   std::optional<Enumerator> e;
   for (std::size_t i = 0; i < comps.size(); ++i) {
     io::throw_if_cancelled("exact inference");
     if (plans[i].solver == ExactPlan::Solver::Eliminate) {
-      log_z += eliminate_component(net, comps[i], plans[i].elimination, marginals, mode, nullptr);
+      log_z += eliminate_component(net, comps[i], plans[i].elimination, marginals, mode, nullptr, clause_prob);
       continue;
     }
     if (comps[i].atoms.size() == 1 && comps[i].blocks.empty()) {
-      log_z += single_atom(net, comps[i], marginals, mode, nullptr);
+      log_z += single_atom(net, comps[i], marginals, mode, nullptr, clause_prob);
       continue;
     }
     if (!e) e.emplace(net);
-    log_z += e->run(comps[i], marginals, mode, nullptr);
+    log_z += e->run(comps[i], marginals, mode, nullptr, clause_prob);
   }
   return log_z;
 }
@@ -318,18 +345,28 @@ std::vector<ExactPlan> plan_all(const GroundNetwork& net, const std::vector<Comp
   return plans;
 }
 
-}  // namespace
-
-InferenceResult exact_inference(const GroundNetwork& net, const ExactOptions& options) {
+InferenceResult exact_solve(const GroundNetwork& net, const ExactOptions& options, std::vector<double>* clause_prob) {
   const auto comps = split_components(net);
   ExactSummary summary;
   const auto plans = plan_all(net, comps, options, summary);
   InferenceResult r;
   r.method = summary.describe();
   r.marginals.assign(static_cast<std::size_t>(net.num_atoms()), 0.0);
-  r.log_z = net.constant() + solve_components(net, comps, plans, r.marginals);
+  if (clause_prob) clause_prob->assign(static_cast<std::size_t>(net.num_clauses()), 1.0);
+  r.log_z = net.constant() + solve_components(net, comps, plans, r.marginals, nullptr, clause_prob);
   r.log_z_exact = true;
   return r;
+}
+
+}  // namespace
+
+InferenceResult exact_inference(const GroundNetwork& net, const ExactOptions& options) {
+  return exact_solve(net, options, nullptr);
+}
+
+InferenceResult exact_clause_probabilities(const GroundNetwork& net, std::vector<double>& clause_prob,
+                                           const ExactOptions& options) {
+  return exact_solve(net, options, &clause_prob);
 }
 
 double exact_components(const GroundNetwork& net, std::span<const Component> comps, std::vector<double>& marginals) {

@@ -73,11 +73,18 @@ struct ExactSummary {
 
 // Solves the given components of `net` exactly, each as `plans` says (plans[i] for
 // comps[i], none TooLarge): writes their atoms' marginals into `marginals` (global
-// ids, sized num_atoms) and, if `mode` is given, a most probable state into it;
-// returns the sum of their log Z (without the network constant).
+// ids, sized num_atoms) and, if `mode` is given, a most probable state into it, and if
+// `clause_prob` is given (sized num_clauses), the probability that each of their clauses
+// is satisfied; returns the sum of their log Z (without the network constant).
 double solve_components(const GroundNetwork& net, std::span<const Component> comps,
                         std::span<const ExactPlan> plans, std::vector<double>& marginals,
-                        std::vector<std::uint8_t>* mode = nullptr);
+                        std::vector<std::uint8_t>* mode = nullptr, std::vector<double>* clause_prob = nullptr);
+
+// Exact inference plus, per clause, the probability that it is satisfied (hard clauses:
+// 1 up to rounding): d log Z / d weight(c), the expected clause counts of the gradient
+// of a log-likelihood.
+InferenceResult exact_clause_probabilities(const GroundNetwork& net, std::vector<double>& clause_prob,
+                                           const ExactOptions& options = {});
 
 // Solves the given components of `net` exactly (planning each with default options,
 // no size check): writes their atoms' marginals into `marginals` (global ids, sized

@@ -2,7 +2,7 @@
 // grounds one clause: domain sizes, evidence lookups, folding of query literals against
 // fixed atoms, and adding the folded clause to the network. The generic grounder and the
 // generated code share `prepare_grounding` (query index, exactly-one blocks, free atoms),
-// so both produce the same network.
+// so both produce the same network, and both end with `fold_forced_atoms`.
 #pragma once
 
 #include <cstdint>
@@ -11,6 +11,7 @@
 
 #include "runtime/io/cancel.h"
 #include "runtime/mln/evidence.h"
+#include "runtime/mln/forced_atoms.h"
 #include "runtime/mln/grounder.h"
 
 namespace ksmc::runtime::mln {

@@ -4,6 +4,7 @@
 
 #include "runtime/io/cancel.h"
 #include "runtime/mln/error.h"
+#include "runtime/mln/forced_atoms.h"
 #include "runtime/mln/ground_bound.h"
 
 namespace ksmc::runtime::mln {
@@ -314,6 +315,7 @@ Grounding ground(const Program& program, const Domain& domain, const Evidence& e
   g.program = &program;
   g.domain = &domain;
   Grounder(program, domain, evidence, g).run();
+  fold_forced_atoms(g);
   return g;
 }
 

@@ -26,6 +26,7 @@ struct Predicate {
   bool query = false;                    // false: evidence predicate (closed world)
   bool query_evidence_allowed = false;   // query atoms may be fixed by a .db file
   std::int32_t exclusive_arg = -1;       // Alchemy `p(x, t!)`: exactly one t per other args
+  bool auxiliary = false;                // introduced by a rewrite (per-formula weights): not reported
 };
 
 // "exactly one of P1(args), ..., Pk(args)" for every binding; predicates share arg types.

@@ -165,7 +165,10 @@ double pll(const std::vector<Conditional>& conds, std::span<const double> w, std
   return total;
 }
 
-// The network with clause weights from the parameters (and no constant).
+// The network with clause weights from the parameters (and no constant). Clause c of the
+// result is clause c of `net`: a clause whose weight comes out exactly 0 is kept with the
+// smallest positive weight (exp of it is 1: no factor), since its expected count is still
+// part of the gradient.
 GroundNetwork reweighted(const GroundNetwork& net, const WeightTying& tying, std::span<const double> w) {
   GroundNetwork out;
   out.add_atoms(net.num_atoms());
@@ -173,43 +176,76 @@ GroundNetwork reweighted(const GroundNetwork& net, const WeightTying& tying, std
   for (std::int32_t c = 0; c < net.num_clauses(); ++c) {
     if (net.is_hard(c)) { out.add_hard_clause(net.clause(c), net.origin(c)); continue; }
     const Share s = share_of(net, c, tying);
-    out.add_clause(net.clause(c), s.param >= 0 ? w[s.param] * s.scale : s.fixed, net.origin(c));
+    const double wc = s.param >= 0 ? w[s.param] * s.scale : s.fixed;
+    out.add_clause(net.clause(c), wc != 0.0 ? wc : std::numeric_limits<double>::denorm_min(), net.origin(c));
   }
+  if (out.num_clauses() != net.num_clauses())
+    throw MlnError("weight learning: the training network has duplicate or tautological clauses");
   return out;
 }
 
-// Conditional log-likelihood sum_worlds [sum_c w_c n_c(x) - log Z] and its gradient.
+// One training network for the conditional log-likelihood: its worlds' satisfied-clause
+// counts per parameter, and the learned clauses with their parameter and scale.
 struct CllSet {
   const GroundNetwork* net;
   double worlds = 0.0;
   std::vector<double> counts;  // per param: sum over worlds of scaled satisfied-clause counts
   double fixed = 0.0;          // sum over worlds of satisfied fixed soft weights
+  std::vector<std::pair<std::int32_t, Share>> learned;  // (clause, share) with share.param >= 0
 };
 
+std::vector<CllSet> tabulate_cll(std::span<const TrainingSet> data, const WeightTying& tying, double& worlds) {
+  std::vector<CllSet> sets;
+  worlds = 0.0;
+  for (std::size_t si = 0; si < data.size(); ++si) {
+    const GroundNetwork& net = data[si].network;
+    CllSet s{&net, 0.0, std::vector<double>(static_cast<std::size_t>(tying.num_params), 0.0), 0.0, {}};
+    for (std::int32_t c = 0; c < net.num_clauses(); ++c) {
+      const Share sh = share_of(net, c, tying);
+      if (sh.param >= 0) s.learned.push_back({c, sh});
+    }
+    for (auto& [x, count] : merge_worlds(data[si], si)) {
+      s.worlds += count;
+      for (std::int32_t c = 0; c < net.num_clauses(); ++c) {
+        if (net.is_hard(c) || !satisfied(net, c, x)) continue;
+        const Share sh = share_of(net, c, tying);
+        if (sh.param >= 0) s.counts[sh.param] += count * sh.scale;
+        else s.fixed += count * sh.fixed;
+      }
+    }
+    worlds += s.worlds;
+    sets.push_back(std::move(s));
+  }
+  return sets;
+}
+
+// Conditional log-likelihood sum_worlds [sum_c w_c n_c(x) - log Z(w)] and its exact
+// gradient: observed counts minus expected counts, E[n_c] = P(clause c satisfied) from
+// exact inference (junction tree or enumeration) on the reweighted network.
 double cll(const std::vector<CllSet>& sets, const WeightTying& tying, std::span<const double> w, std::vector<double>& grad) {
   double total = 0.0;
-  std::vector<double> wp(w.begin(), w.end());
-  constexpr double h = 1e-4;
+  std::vector<double> prob;
   for (const auto& s : sets) {
     total += s.fixed;
-    for (std::size_t j = 0; j < wp.size(); ++j) {
+    for (std::size_t j = 0; j < w.size(); ++j) {
       total += w[j] * s.counts[j];
       grad[j] += s.counts[j];
     }
-    total -= s.worlds * exact_inference(reweighted(*s.net, tying, w)).log_z;
-    for (std::size_t j = 0; j < wp.size(); ++j) {
-      wp[j] = w[j] + h;
-      const double up = exact_inference(reweighted(*s.net, tying, wp)).log_z;
-      wp[j] = w[j] - h;
-      const double down = exact_inference(reweighted(*s.net, tying, wp)).log_z;
-      wp[j] = w[j];
-      grad[j] -= s.worlds * (up - down) / (2.0 * h);
-    }
+    total -= s.worlds * exact_clause_probabilities(reweighted(*s.net, tying, w), prob).log_z;
+    for (const auto& [c, sh] : s.learned) grad[sh.param] -= s.worlds * sh.scale * prob[c];
   }
   return total;
 }
 
 }  // namespace
+
+double conditional_log_likelihood(std::span<const TrainingSet> data, const WeightTying& tying,
+                                  std::span<const double> params, std::vector<double>& gradient) {
+  double worlds = 0.0;
+  const auto sets = tabulate_cll(data, tying, worlds);
+  gradient.assign(static_cast<std::size_t>(tying.num_params), 0.0);
+  return cll(sets, tying, params, gradient);
+}
 
 LearnResult learn_weights(std::span<const TrainingSet> data, const WeightTying& tying, std::vector<double> initial,
                           const LearnOptions& options) {
@@ -223,21 +259,7 @@ LearnResult learn_weights(std::span<const TrainingSet> data, const WeightTying& 
     conds = tabulate_pll(data, tying, worlds);
     data_term = [&](std::span<const double> w, std::vector<double>& g) { return pll(conds, w, g); };
   } else {
-    for (std::size_t si = 0; si < data.size(); ++si) {
-      CllSet s{&data[si].network, 0.0, std::vector<double>(np, 0.0), 0.0};
-      const GroundNetwork& net = data[si].network;
-      for (auto& [x, count] : merge_worlds(data[si], si)) {
-        s.worlds += count;
-        for (std::int32_t c = 0; c < net.num_clauses(); ++c) {
-          if (net.is_hard(c) || !satisfied(net, c, x)) continue;
-          const Share sh = share_of(net, c, tying);
-          if (sh.param >= 0) s.counts[sh.param] += count * sh.scale;
-          else s.fixed += count * sh.fixed;
-        }
-      }
-      worlds += s.worlds;
-      sets.push_back(std::move(s));
-    }
+    sets = tabulate_cll(data, tying, worlds);
     data_term = [&](std::span<const double> w, std::vector<double>& g) { return cll(sets, tying, w, g); };
   }
   if (worlds <= 0.0) throw MlnError("weight learning: no training worlds");
@@ -257,8 +279,7 @@ LearnResult learn_weights(std::span<const TrainingSet> data, const WeightTying& 
   std::vector<double> w = std::move(initial), g, wn, gn;
   double f = eval(w, g);
   double step = 1.0;
-  const double tol = options.objective == Objective::ConditionalLikelihood ? std::max(options.tolerance, 1e-6)
-                                                                           : options.tolerance;
+  const double tol = options.tolerance;
   for (r.iterations = 0; r.iterations < options.max_iterations; ++r.iterations) {
     double gmax = 0.0, gg = 0.0;
     for (double x : g) { gmax = std::max(gmax, std::abs(x)); gg += x * x; }

@@ -15,8 +15,10 @@
 //    iteration costs one pass over the tables.
 //  * ConditionalLikelihood (discriminative): sum over worlds of log P(x | evidence)
 //    = sum_c w_c n_c(x) - log Z(w); log Z by exact inference (enumeration or elimination),
-//    its gradient (expected clause counts) by central differences of the exact log Z.
-//    Only for networks exact inference can solve (otherwise an MlnError).
+//    its gradient exactly: observed clause counts minus expected ones, E[n_c] = P(clause
+//    c satisfied) from the exact marginals (a clause's cluster belief in the junction
+//    tree; accumulated during enumeration). Only for networks exact inference can solve
+//    (otherwise an MlnError).
 // The optimiser is gradient ascent with Barzilai-Borwein steps and Armijo backtracking.
 #pragma once
 
@@ -54,6 +56,11 @@ struct LearnResult {
   std::int32_t iterations = 0;
   bool converged = false;
 };
+
+// The conditional log-likelihood's data term (no prior) at `params`, summed over worlds,
+// and its exact gradient (into `gradient`). Throws MlnError like learn_weights.
+double conditional_log_likelihood(std::span<const TrainingSet> data, const WeightTying& tying,
+                                  std::span<const double> params, std::vector<double>& gradient);
 
 // Throws MlnError when a training world breaks a hard clause or an exactly-one block.
 LearnResult learn_weights(std::span<const TrainingSet> data, const WeightTying& tying, std::vector<double> initial,

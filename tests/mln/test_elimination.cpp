@@ -3,6 +3,8 @@
 // and the indoor knowledge base on floor plans.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "runtime/mln/components.h"
@@ -155,6 +157,53 @@ TEST_CASE("elimination equals enumeration on 300 random networks with blocks and
   }
   CHECK(checked >= 150);
   WARN("random networks: " << checked << " matched enumeration, " << refused << " infeasible refused by both");
+}
+
+TEST_CASE("clause probabilities (expected clause counts): enumeration and elimination equal brute force",
+          "[mln][elimination][clause_prob]") {
+  std::mt19937_64 rng(777);
+  int checked = 0;
+  for (int trial = 0; trial < 120; ++trial) {
+    const auto net = random_network(rng, 6 + trial % 9);
+    INFO("trial " << trial);
+    // Brute force over all 2^n states (log_weight is -inf for infeasible ones).
+    const auto n = net.num_atoms();
+    std::vector<double> sat(static_cast<std::size_t>(net.num_clauses()), 0.0);
+    std::vector<std::uint8_t> x(static_cast<std::size_t>(n));
+    std::vector<double> lw;
+    for (std::uint32_t mask = 0; mask < (1u << n); ++mask) {
+      for (AtomId a = 0; a < n; ++a) x[a] = (mask >> a) & 1;
+      lw.push_back(net.log_weight(x));
+    }
+    const double mx = *std::max_element(lw.begin(), lw.end());
+    if (!std::isfinite(mx)) continue;  // infeasible
+    double z = 0.0;
+    for (std::uint32_t mask = 0; mask < (1u << n); ++mask) {
+      const double p = std::exp(lw[mask] - mx);
+      if (p == 0.0) continue;
+      z += p;
+      for (AtomId a = 0; a < n; ++a) x[a] = (mask >> a) & 1;
+      for (std::int32_t c = 0; c < net.num_clauses(); ++c) {
+        bool s = false;
+        for (Lit l : net.clause(c)) s = s || lit_true(l, x[lit_atom(l)]);
+        if (s) sat[c] += p;
+      }
+    }
+    for (double& v : sat) v /= z;
+    std::vector<double> by_enum;
+    const auto r = exact_clause_probabilities(net, by_enum, enumeration_only());
+    CHECK(std::abs(r.log_z - (mx + std::log(z))) < 1e-9);
+    std::vector<double> by_elim(sat.size(), -1.0), marg(static_cast<std::size_t>(n), 0.0);
+    for (const auto& comp : split_components(net))
+      eliminate_component(net, comp, plan_elimination(net, comp), marg, nullptr, nullptr, &by_elim);
+    for (std::int32_t c = 0; c < net.num_clauses(); ++c) {
+      INFO("clause " << c);
+      CHECK(std::abs(by_enum[c] - sat[c]) < 1e-9);
+      CHECK(std::abs(by_elim[c] - sat[c]) < 1e-9);
+    }
+    ++checked;
+  }
+  CHECK(checked >= 60);
 }
 
 TEST_CASE("elimination equals enumeration on the table-top scenes", "[mln][elimination][tabletop]") {

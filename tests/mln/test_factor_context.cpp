@@ -76,6 +76,7 @@ Grounding ground_like_generated(const Program& program, const ksmc::tests::mln::
       f.soft(w09, 5);
     }
   }
+  fold_forced_atoms(g);  // as generated code ends
   return g;
 }
 

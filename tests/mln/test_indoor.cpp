@@ -40,7 +40,8 @@ TEST_CASE("indoor KB: exact, Gibbs, MC-SAT and auto agree on a 5-unit scene", "[
   const auto g = ground(kb.program, d, ev);
   const auto& net = g.network;
   CHECK(net.num_blocks() == 5);
-  CHECK(net.num_atoms() == 20 + 25);  // 4 types x 5 units + SaLe over all 25 pairs (hard units fix most)
+  CHECK(net.num_atoms() == 20 + 10);  // 4 types x 5 units + SaLe over the 10 adjacent ordered pairs (the other
+                                     // 15 are forced false by !Adj(a, b) => !SaLe(a, b) and folded)
   const auto comps = split_components(net);
   double bits = 0.0;
   for (const auto& c : comps) bits = std::max(bits, component_state_bits(net, c));

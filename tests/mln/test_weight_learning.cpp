@@ -6,8 +6,10 @@
 #include <random>
 
 #include "runtime/mln/error.h"
+#include "runtime/mln/exact.h"
 #include "runtime/mln/grounder.h"
 #include "runtime/mln/weight_learning.h"
+#include "tests/mln/indoor_kb.h"
 
 using namespace ksmc::runtime::mln;
 
@@ -136,4 +138,55 @@ TEST_CASE("weight learning: a strong prior shrinks, tied clauses share a weight,
   const TrainingSet bads[] = {std::move(bad)};
   WeightTying none;
   CHECK_THROWS_WITH(learn_weights(bads, none, {}), "training set 1, world 2: breaks an exactly-one block");
+}
+
+TEST_CASE("conditional likelihood: the exact gradient equals central finite differences", "[mln][learn][cll]") {
+  // The indoor rule base on 6 units: one component that exact inference solves by
+  // variable elimination (blocks, hard clauses, clauses of up to 4 literals).
+  ksmc::tests::mln::IndoorKb kb;
+  const std::string scene =
+      "CoLi(U0)\nMulDoor(U0)\nRoLi(U1)\nRoLi(U2)\nHaLi(U3)\nMulDoor(U3)\nRoLi(U5)\n"
+      "Adj(U0, U1)\nAdj(U1, U0)\nAdj(U0, U2)\nAdj(U2, U0)\nAdj(U0, U3)\nAdj(U3, U0)\nAdj(U1, U2)\nAdj(U2, U1)\n"
+      "Adj(U3, U4)\nAdj(U4, U3)\nAdj(U4, U5)\nAdj(U5, U4)\nAdj(U2, U5)\nAdj(U5, U2)\n";
+  Domain d;
+  collect_db_constants(scene, "plan.db", kb.program, d);
+  Evidence ev(kb.program, d);
+  parse_db(scene, "plan.db", kb.program, d, ev);
+  TrainingSet ts;
+  ts.network = ground(kb.program, d, ev).network;
+  REQUIRE(exact_inference(ts.network).method.find("elim") != std::string::npos);
+  // Two feasible worlds: the most probable state, and the one of the opposite weights.
+  ts.worlds.push_back(exact_map(ts.network).state);
+  Program flipped = kb.program;
+  for (auto& c : flipped.clauses) c.weight = -c.weight;
+  ts.worlds.push_back(exact_map(ground(flipped, d, ev).network).state);
+  REQUIRE(ts.worlds[0] != ts.worlds[1]);
+  // A parameter per soft rule, rules i5 and i6 tied with scale 0.5 each.
+  WeightTying tying;
+  for (const auto& c : kb.program.clauses) {
+    tying.param_of_clause.push_back(c.hard ? -1 : tying.num_params);
+    tying.scale_of_clause.push_back(1.0);
+    if (!c.hard) ++tying.num_params;
+  }
+  tying.param_of_clause[4] = tying.param_of_clause[3];
+  tying.scale_of_clause[3] = tying.scale_of_clause[4] = 0.5;
+  const TrainingSet sets[] = {std::move(ts)};
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-2.0, 2.5);
+  std::vector<double> w(static_cast<std::size_t>(tying.num_params));
+  for (double& x : w) x = u(rng);
+  w[5] = 0.0;  // a zero weight keeps its clause in the gradient
+  std::vector<double> grad, scratch;
+  conditional_log_likelihood(sets, tying, w, grad);
+  constexpr double h = 1e-5;
+  for (std::size_t j = 0; j < w.size(); ++j) {
+    INFO("parameter " << j);
+    auto wp = w;
+    wp[j] = w[j] + h;
+    const double up = conditional_log_likelihood(sets, tying, wp, scratch);
+    wp[j] = w[j] - h;
+    const double down = conditional_log_likelihood(sets, tying, wp, scratch);
+    const double fd = (up - down) / (2 * h);
+    CHECK(std::abs(grad[j] - fd) < 1e-6 * std::max(1.0, std::abs(fd)));
+  }
 }

@@ -326,6 +326,7 @@ mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) 
   ground_spurious_862e(g, clause++);
   ground_spurious_6748(g, clause++);
   ground_spurious_5b4b(g, clause++);
+  mln::fold_forced_atoms(grounding);
   return grounding;
 }
 

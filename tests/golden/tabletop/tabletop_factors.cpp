@@ -534,6 +534,7 @@ mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) 
   ground_hidden_8a9f(g, clause++);
   ground_falseest_317c(g, clause++);
   ground_hidden_5734(g, clause++);
+  mln::fold_forced_atoms(grounding);
   return grounding;
 }
 
