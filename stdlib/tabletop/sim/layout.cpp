@@ -77,6 +77,11 @@ Eigen::Quaterniond resting_orientation(Rng& rng, int up_axis, double yaw) {
 // Lowers/raises the box so that its lowest point is at `z`.
 void set_bottom(Box& b, double z) { b.pose.t.z() += z - lowest_z(b); }
 
+// True when `b` comes within 3 mm of a body already placed.
+bool clashes(const Box& b, const std::vector<SimBody>& bodies) {
+  return std::any_of(bodies.begin(), bodies.end(), [&](const SimBody& o) { return sat_overlap(b, o.box) > -0.003; });
+}
+
 // Tries to drop `item` leaning against the bottom box of a column. Returns false if no free spot.
 bool place_leaner(Rng& rng, const BoxItem& item, const Box& base, const std::vector<SimBody>& bodies,
                   const Eigen::Vector2d& region, Box& out) {
@@ -110,10 +115,25 @@ bool place_leaner(Rng& rng, const BoxItem& item, const Box& base, const std::vec
                                                      Eigen::Vector2d(-n.y(), n.x());
     b.pose.t.z() = 0.0;
     set_bottom(b, 0.002);
-    if (std::abs(b.pose.t.x()) > region.x() || std::abs(b.pose.t.y()) > region.y()) continue;
-    const bool clash = std::any_of(bodies.begin(), bodies.end(),
-                                   [&](const SimBody& o) { return sat_overlap(b, o.box) > -0.003; });
-    if (clash) continue;
+    if (std::abs(b.pose.t.x()) > region.x() || std::abs(b.pose.t.y()) > region.y() || clashes(b, bodies)) continue;
+    out = b;
+    return true;
+  }
+  return false;
+}
+
+// Tries to drop `item`, lying flat, on the top face of `base` beside what is already there.
+bool place_beside(Rng& rng, const BoxItem& item, const Box& base, const std::vector<SimBody>& bodies, Box& out) {
+  const Footprint fb = footprint(base);
+  for (int attempt = 0; attempt < 30; ++attempt) {
+    Box b;
+    b.size = item.size;
+    b.pose.q = resting_orientation(rng, smallest_axis(item.size), rng.uniform(0.0, kPi));
+    const Eigen::Vector2d off(rng.uniform(-0.6, 0.6) * fb.half.x(), rng.uniform(-0.6, 0.6) * fb.half.y());
+    const Eigen::Vector2d c = fb.centre + Eigen::Rotation2Dd(fb.yaw) * off;
+    b.pose.t = Eigen::Vector3d(c.x(), c.y(), 0.0);
+    set_bottom(b, highest_z(base) + kDropGap);
+    if (clashes(b, bodies)) continue;
     out = b;
     return true;
   }
@@ -140,7 +160,7 @@ std::optional<Layout> draw_layout(Rng& rng, int n, const TableSpec& table, const
   while (remaining > 0) {
     const int height = std::min<int>(remaining, 1 + static_cast<int>(rng.weighted_index(params.stack_height_odds)));
     std::vector<BoxItem> members;
-    for (int i = 0; i < height; ++i) members.push_back(draw_box(rng));
+    for (int i = 0; i < height; ++i) members.push_back(draw_box(rng, params.catalogue));
     remaining -= height;
 
     if (height == 1 && !column_bases.empty() && rng.bernoulli(params.lean_rate)) {
@@ -219,6 +239,18 @@ std::optional<Layout> draw_layout(Rng& rng, int n, const TableSpec& table, const
         column_of.push_back(static_cast<int>(columns.size()) - 1);
       }
       placed_column = true;
+      if (params.side_by_side_rate > 0.0 && height >= 2 && remaining > 0 && rng.bernoulli(params.side_by_side_rate)) {
+        const BoxItem extra = draw_box(rng, params.catalogue);
+        Box beside;
+        if (place_beside(rng, extra, layout.bodies[column_bases.back()].box, layout.bodies, beside)) {
+          columns.back().insert(columns.back().begin() + 1, layout.bodies.size());
+          layout.items.push_back(extra);
+          layout.bodies.push_back({beside, extra.mass, extra.friction});
+          placed.push_back(footprint(beside));
+          column_of.push_back(static_cast<int>(columns.size()) - 1);
+          --remaining;
+        }
+      }
     }
     if (placed_column) continue;
     // No free spot on the table: put the boxes on top of existing columns (at most 3 high).
