@@ -27,17 +27,18 @@ PairGeometry geometry(const Scene& s, Se3 pa, Vec3 sa, Se3 pb, Vec3 sb, double c
   return pair_geometry(box_of(s, pa, sa), box_of(s, pb, sb), cutoff);
 }
 
-EvidenceParams contact_params(double eps) {
+// The near-vertical tolerances are the scene's, derived from its gap noise (gap_noise.h).
+EvidenceParams contact_params(const Scene& s, double eps) {
   EvidenceParams p;
   p.contact_eps = eps;
-  p.vertical_contact_eps = std::max(kDefaults.vertical_contact_eps, eps);
+  p.vertical_contact_eps = std::max(s.vertical_tolerance(), eps);
   return p;
 }
 
-EvidenceParams intersect_params(double eps) {
+EvidenceParams intersect_params(const Scene& s, double eps) {
   EvidenceParams p;
   p.intersect_eps = eps;
-  p.vertical_intersect_eps = std::max(kDefaults.vertical_intersect_eps, eps);
+  p.vertical_intersect_eps = std::max(s.vertical_tolerance(), eps);
   return p;
 }
 
@@ -51,7 +52,7 @@ bool stable(const Scene& s, Se3 pose, Vec3 size, double tol) {
 }
 
 bool contact(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, double eps) {
-  const EvidenceParams p = contact_params(eps);
+  const EvidenceParams p = contact_params(s, eps);
   EvidenceParams& rec = s.relation_params_mut();
   rec.contact_eps = p.contact_eps;
   rec.vertical_contact_eps = p.vertical_contact_eps;
@@ -59,7 +60,7 @@ bool contact(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, d
 }
 
 bool intersect(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, double eps) {
-  const EvidenceParams p = intersect_params(eps);
+  const EvidenceParams p = intersect_params(s, eps);
   EvidenceParams& rec = s.relation_params_mut();
   rec.intersect_eps = p.intersect_eps;
   rec.vertical_intersect_eps = p.vertical_intersect_eps;
@@ -83,7 +84,7 @@ bool hover(const Scene& s, std::int32_t o, double eps) {
 bool touching(const Scene& s, std::int32_t a, std::int32_t b, double eps) {
   // contact or intersect, whatever the intersect depth: overlapping, or a gap within the
   // contact tolerance of its direction (contact_from_geometry).
-  const EvidenceParams p = contact_params(eps);
+  const EvidenceParams p = contact_params(s, eps);
   const PairGeometry& g = s.pair(a, b, std::max(p.max_contact_eps(), kDefaults.max_contact_eps()));
   if (g.overlapping) return true;
   const double tol = g.stacked && is_near_vertical(g.direction, p) ? p.vertical_contact_eps : p.contact_eps;
@@ -116,6 +117,7 @@ Likelihood gaussian(double sigma, bool robust, double outlier_px) { return Keypo
 
 namespace pose {
 Source perturb(double sigma_t, double sigma_r, int candidates) { return PosePerturb{sigma_t, sigma_r, candidates}; }
+Source fit(double scale) { return PoseFit{scale}; }
 }  // namespace pose
 
 }  // namespace ksmc::stdlib::tabletop::blocks

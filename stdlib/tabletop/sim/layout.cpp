@@ -122,15 +122,25 @@ bool place_leaner(Rng& rng, const BoxItem& item, const Box& base, const std::vec
   return false;
 }
 
-// Tries to drop `item`, lying flat, on the top face of `base` beside what is already there.
-bool place_beside(Rng& rng, const BoxItem& item, const Box& base, const std::vector<SimBody>& bodies, Box& out) {
+// Tries to drop `item`, lying flat, on the top face of `base`, at the end of its long axis
+// away from `upper` (the box already on it), so that `base` carries both.
+bool place_beside(Rng& rng, const BoxItem& item, const Box& base, const Box& upper, const std::vector<SimBody>& bodies,
+                  Box& out) {
   const Footprint fb = footprint(base);
-  for (int attempt = 0; attempt < 30; ++attempt) {
+  const int long_axis = fb.half.x() >= fb.half.y() ? 0 : 1;
+  const Eigen::Vector2d u = Eigen::Rotation2Dd(fb.yaw) * Eigen::Vector2d::Unit(long_axis);
+  const double side = (upper.pose.t.head<2>() - fb.centre).dot(u) > 0.0 ? -1.0 : 1.0;
+  for (int attempt = 0; attempt < 12; ++attempt) {
     Box b;
     b.size = item.size;
-    b.pose.q = resting_orientation(rng, smallest_axis(item.size), rng.uniform(0.0, kPi));
-    const Eigen::Vector2d off(rng.uniform(-0.6, 0.6) * fb.half.x(), rng.uniform(-0.6, 0.6) * fb.half.y());
-    const Eigen::Vector2d c = fb.centre + Eigen::Rotation2Dd(fb.yaw) * off;
+    const double yaw = fb.yaw + (rng.bernoulli(0.5) ? 0.0 : kPi / 2) + rng.uniform(-0.1, 0.1);
+    b.pose.q = resting_orientation(rng, smallest_axis(item.size), yaw);
+    const Footprint f = footprint(b);
+    // Half extent of the new box along u.
+    const double reach = std::abs(std::cos(f.yaw - std::atan2(u.y(), u.x()))) * f.half.x() +
+                         std::abs(std::sin(f.yaw - std::atan2(u.y(), u.x()))) * f.half.y();
+    if (reach > 0.8 * fb.half[long_axis]) continue;  // would hang over the centre
+    const Eigen::Vector2d c = fb.centre + side * (fb.half[long_axis] - reach) * u;
     b.pose.t = Eigen::Vector3d(c.x(), c.y(), 0.0);
     set_bottom(b, highest_z(base) + kDropGap);
     if (clashes(b, bodies)) continue;
@@ -242,7 +252,8 @@ std::optional<Layout> draw_layout(Rng& rng, int n, const TableSpec& table, const
       if (params.side_by_side_rate > 0.0 && height >= 2 && remaining > 0 && rng.bernoulli(params.side_by_side_rate)) {
         const BoxItem extra = draw_box(rng, params.catalogue);
         Box beside;
-        if (place_beside(rng, extra, layout.bodies[column_bases.back()].box, layout.bodies, beside)) {
+        const auto& col = columns.back();
+        if (place_beside(rng, extra, layout.bodies[col[0]].box, layout.bodies[col[1]].box, layout.bodies, beside)) {
           columns.back().insert(columns.back().begin() + 1, layout.bodies.size());
           layout.items.push_back(extra);
           layout.bodies.push_back({beside, extra.mass, extra.friction});
