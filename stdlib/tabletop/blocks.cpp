@@ -28,6 +28,9 @@ PairGeometry geometry(const Scene& s, Se3 pa, Vec3 sa, Se3 pb, Vec3 sb, double c
 }
 
 // The near-vertical tolerances are the scene's, derived from its gap noise (gap_noise.h).
+// The near-vertical contact tolerance is the scene's, derived from its gap noise
+// (gap_noise.h): a gap beyond 3 sigma is not a touch. Penetration keeps the stdlib's 15 mm
+// (a measured choice: deriving it too made more real pairs intersect, docs/tabletop_kit.md).
 EvidenceParams contact_params(const Scene& s, double eps) {
   EvidenceParams p;
   p.contact_eps = eps;
@@ -35,10 +38,10 @@ EvidenceParams contact_params(const Scene& s, double eps) {
   return p;
 }
 
-EvidenceParams intersect_params(const Scene& s, double eps) {
+EvidenceParams intersect_params(double eps) {
   EvidenceParams p;
   p.intersect_eps = eps;
-  p.vertical_intersect_eps = std::max(s.vertical_tolerance(), eps);
+  p.vertical_intersect_eps = std::max(kDefaults.vertical_intersect_eps, eps);
   return p;
 }
 
@@ -60,7 +63,7 @@ bool contact(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, d
 }
 
 bool intersect(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, double eps) {
-  const EvidenceParams p = intersect_params(s, eps);
+  const EvidenceParams p = intersect_params(eps);
   EvidenceParams& rec = s.relation_params_mut();
   rec.intersect_eps = p.intersect_eps;
   rec.vertical_intersect_eps = p.vertical_intersect_eps;

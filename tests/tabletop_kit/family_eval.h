@@ -4,7 +4,10 @@
 // tabletop_family_eval driver and the test_tabletop_kit_families CTest.
 #pragma once
 
+#include <filesystem>
+#include <fstream>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -54,6 +57,39 @@ inline FamilyScore evaluate_family(const tf::Family& family, const blk::Binding&
     ++fs.scenes;
   }
   return fs;
+}
+
+// Training worlds for `ksmc learn` (docs/mln.md): per scene of `family`, the evidence the
+// kit extracts at the input poses (Alchemy .db, closed world) and the true query atoms —
+// falseEst, hidden from the truth; supported(o) / supportive(o), which hard rule r10 and the
+// closed-world rule r17 derive from the evidence, as the upper / lower body of a support
+// edge of that evidence (the table included). Writes DIR/<family>_<i>.db; returns the
+// number written.
+inline long write_training_dbs(const tf::Family& family, const blk::Binding& binding, const FamilyRun& run,
+                               const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir);
+  long written = 0;
+  for (long i = 0; i < run.scenes; ++i) {
+    const auto g = tf::generate(family, tf::family_scene_seed(family, run.seed, static_cast<std::uint64_t>(i)));
+    auto load = tt::parse_scene(nlohmann::json::parse(sim::scene_json(g)), "scene.json", ".");
+    auto scene = std::make_shared<const tt::Scene>(std::move(load.scene));
+    kit::KitSetup k = kit::make_setup(binding, scene);
+    const auto model = k.setup.model_factory(0);
+    std::string db = kit::evidence_db_of(static_cast<const kit::TabletopModel&>(*model));
+    db += "// true query atoms (generator truth; unlisted: false)\n";
+    for (const auto& o : g.objects) {
+      if (o.false_kind != sim::FalseKind::none) db += "falseEst(" + o.id + ")\n";
+      if (o.hidden) db += "hidden(" + o.id + ")\n";
+    }
+    std::set<std::string> upper, lower;
+    for (const auto& [u, l] : tt::support_edges(kit::result_of(static_cast<const kit::TabletopModel&>(*model)).evidence))
+      upper.insert(u), lower.insert(l);
+    for (const auto& u : upper) db += "supported(" + u + ")\n";
+    for (const auto& l : lower) db += "supportive(" + l + ")\n";
+    std::ofstream(dir / fmt::format("{}_{:03}.db", family.name, i)) << db;
+    ++written;
+  }
+  return written;
 }
 
 inline std::string prf(const Counts& c) {

@@ -1,6 +1,7 @@
 // tabletop_family_eval: the per-family table of the table-top kit (issue 12).
 //   tabletop_family_eval [--families all|a,b,...] [--scenes N] [--seed S] [--iterations I]
-//                        [--binding ksm|seed] [--kinds]
+//                        [--binding ksm|seed] [--kinds] [--write-db DIR]
+// --write-db writes training worlds for `ksmc learn` (write_training_dbs) instead of scoring.
 // Prints one row per family: false / hidden / support / contact P R F1 and the undecided
 // share of the true positives (docs/tabletop_families.md).
 #include <charconv>
@@ -29,7 +30,7 @@ long number(std::string_view flag, std::string_view text) {
 int main(int argc, char** argv) {
   try {
     FamilyRun run;
-    std::string which = "all", binding_name = "ksm";
+    std::string which = "all", binding_name = "ksm", db_dir;
     bool kinds = false;
     const std::vector<std::string_view> args(argv + 1, argv + argc);
     for (std::size_t i = 0; i < args.size(); ++i) {
@@ -45,6 +46,7 @@ int main(int argc, char** argv) {
       else if (flag == "--seed") run.seed = static_cast<std::uint64_t>(number(flag, v));
       else if (flag == "--iterations") run.iterations = static_cast<std::uint64_t>(number(flag, v));
       else if (flag == "--binding") binding_name = v;
+      else if (flag == "--write-db") db_dir = v;
       else throw std::invalid_argument(fmt::format("unknown option '{}'", flag));
     }
     if (binding_name != "ksm" && binding_name != "seed") throw std::invalid_argument("--binding: ksm or seed");
@@ -55,6 +57,12 @@ int main(int argc, char** argv) {
     } else {
       std::stringstream ss(which);
       for (std::string name; std::getline(ss, name, ',');) chosen.push_back(&tf::family(name));
+    }
+    if (!db_dir.empty()) {
+      long n = 0;
+      for (const tf::Family* f : chosen) n += write_training_dbs(*f, binding, run, db_dir);
+      std::cout << fmt::format("{} training worlds written to {}\n", n, db_dir);
+      return 0;
     }
     std::vector<FamilyScore> rows;
     for (const tf::Family* f : chosen) {
