@@ -1,5 +1,7 @@
 #include "stdlib/tabletop/block_scene.h"
 
+#include "stdlib/tabletop/gap_noise.h"
+
 #include <algorithm>
 #include <stdexcept>
 #include <utility>
@@ -13,6 +15,25 @@ Scene::Scene(tabletop::Scene input) : input_(std::move(input)) {
   boxes_.resize(n);
   box_valid_.assign(n, 0);
   pairs_.assign(n * n, PairSlot{});
+  fits_.resize(n);
+  for (const auto& o : input_.objects) input_poses_.push_back(o.pose);
+  const EvidenceParams defaults;
+  vertical_tolerance_ = tabletop::vertical_tolerance(gap_noise(input_, defaults.stable_tol_rad), 3.0,
+                                                     defaults.intersect_eps, defaults.vertical_contact_eps);
+}
+
+const KeypointFit& Scene::fit(std::int32_t c) const {
+  auto& slot = fits_.at(static_cast<std::size_t>(c));
+  if (!slot) {
+    if (c == 0) {
+      slot = KeypointFit{};
+    } else {
+      SceneObject o = input_.objects.at(static_cast<std::size_t>(c - 1));
+      o.pose = input_poses_[static_cast<std::size_t>(c - 1)];
+      slot = fit_keypoints(input_, o);
+    }
+  }
+  return *slot;
 }
 
 std::vector<std::string> Scene::names() const {

@@ -11,12 +11,14 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "stdlib/tabletop/evidence_params.h"
+#include "stdlib/tabletop/keypoint_fit.h"
 #include "stdlib/tabletop/obb.h"
 #include "stdlib/tabletop/pair_geometry.h"
 #include "stdlib/tabletop/pose.h"
@@ -59,6 +61,14 @@ class Scene {
   // the distance is exact whenever it is at most `exact_below`.
   const PairGeometry& pair(std::int32_t a, std::int32_t b, double exact_below) const;
 
+  // The pose body c's keypoints imply (keypoint_fit.h), fitted from the input estimate on
+  // first use; not ok for the table and for objects with fewer than four keypoints.
+  const KeypointFit& fit(std::int32_t c) const;
+
+  // The near-vertical contact / intersect tolerance of this scene [m]: 3 standard deviations
+  // of its resting gaps (gap_noise.h) within [5 mm, 15 mm], from the input poses.
+  double vertical_tolerance() const noexcept { return vertical_tolerance_; }
+
   // Moves object body c (c >= 1). One move at a time: commit() keeps it, undo() restores the
   // previous pose and geometry.
   void set_pose(std::int32_t c, const Pose& pose);
@@ -84,6 +94,9 @@ class Scene {
 
   tabletop::Scene input_;
   Pose table_pose_;
+  std::vector<Pose> input_poses_;                     // per object, as given
+  mutable std::vector<std::optional<KeypointFit>> fits_;  // per body, on first use
+  double vertical_tolerance_ = 0.0;
   mutable std::vector<Obb> boxes_;
   mutable std::vector<char> box_valid_;
   mutable std::vector<PairSlot> pairs_;  // [min][max], n x n

@@ -27,10 +27,14 @@ PairGeometry geometry(const Scene& s, Se3 pa, Vec3 sa, Se3 pb, Vec3 sb, double c
   return pair_geometry(box_of(s, pa, sa), box_of(s, pb, sb), cutoff);
 }
 
-EvidenceParams contact_params(double eps) {
+// The near-vertical tolerances are the scene's, derived from its gap noise (gap_noise.h).
+// The near-vertical contact tolerance is the scene's, derived from its gap noise
+// (gap_noise.h): a gap beyond 3 sigma is not a touch. Penetration keeps the stdlib's 15 mm
+// (a measured choice: deriving it too made more real pairs intersect, docs/tabletop_kit.md).
+EvidenceParams contact_params(const Scene& s, double eps) {
   EvidenceParams p;
   p.contact_eps = eps;
-  p.vertical_contact_eps = std::max(kDefaults.vertical_contact_eps, eps);
+  p.vertical_contact_eps = std::max(s.vertical_tolerance(), eps);
   return p;
 }
 
@@ -51,7 +55,7 @@ bool stable(const Scene& s, Se3 pose, Vec3 size, double tol) {
 }
 
 bool contact(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, double eps) {
-  const EvidenceParams p = contact_params(eps);
+  const EvidenceParams p = contact_params(s, eps);
   EvidenceParams& rec = s.relation_params_mut();
   rec.contact_eps = p.contact_eps;
   rec.vertical_contact_eps = p.vertical_contact_eps;
@@ -83,7 +87,7 @@ bool hover(const Scene& s, std::int32_t o, double eps) {
 bool touching(const Scene& s, std::int32_t a, std::int32_t b, double eps) {
   // contact or intersect, whatever the intersect depth: overlapping, or a gap within the
   // contact tolerance of its direction (contact_from_geometry).
-  const EvidenceParams p = contact_params(eps);
+  const EvidenceParams p = contact_params(s, eps);
   const PairGeometry& g = s.pair(a, b, std::max(p.max_contact_eps(), kDefaults.max_contact_eps()));
   if (g.overlapping) return true;
   const double tol = g.stacked && is_near_vertical(g.direction, p) ? p.vertical_contact_eps : p.contact_eps;
@@ -116,6 +120,7 @@ Likelihood gaussian(double sigma, bool robust, double outlier_px) { return Keypo
 
 namespace pose {
 Source perturb(double sigma_t, double sigma_r, int candidates) { return PosePerturb{sigma_t, sigma_r, candidates}; }
+Source fit(double scale) { return PoseFit{scale}; }
 }  // namespace pose
 
 }  // namespace ksmc::stdlib::tabletop::blocks

@@ -22,8 +22,8 @@
 
 namespace ksmc::stdlib::tabletop::blocks {
 
-// Moves the proposal sources make (`makes perturb`): perturb is its own reverse.
-enum class Move { perturb };
+// Moves the proposal sources make (`makes perturb`, `makes fit`): each is its own reverse.
+enum class Move { perturb, fit };
 
 // Global prior `mln`: the Markov logic score of the state (kit: PriorQuantity).
 struct MlnPrior {};
@@ -43,7 +43,13 @@ struct PosePerturb {
   double sigma_r = 0.0;    // [rad]
   int candidates = 20;
 };
-using Source = PosePerturb;
+// Proposal source `pose.fit` (the keypoint-fit move, fit_kernel.h): an independence proposal
+// from the Laplace approximation of the object's keypoint likelihood (keypoint_fit.h), its
+// covariance scaled by scale².
+struct PoseFit {
+  double scale = 0.5;
+};
+using Source = std::variant<PosePerturb, PoseFit>;
 
 // Output `scene.decisions`: the query predicates reported per object as false_prob /
 // hidden_prob with their 0.4 / 0.6 decisions (program predicate ids).
@@ -80,6 +86,7 @@ Likelihood gaussian(double sigma, bool robust, double outlier_px);
 
 namespace pose {
 Source perturb(double sigma_t, double sigma_r, int candidates);
+Source fit(double scale);
 }  // namespace pose
 
 // Whether bodies a and b touch in the sense of obb::hover with tolerance eps.

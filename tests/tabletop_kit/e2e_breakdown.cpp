@@ -4,6 +4,8 @@
 // decision came from (at the input poses and at the reported state).
 //
 //   tabletop_e2e_breakdown [iterations=300] [scenes=50] [prior=map|log_z] [current_competes=1|0] [sigma_t_mm sigma_r_deg]
+// With KSMC_TTKIT_FAMILY=<family> the scenes are that noise-model family's (tools/tabletop_families,
+// batch seed 2027, as tabletop_family_eval draws them).
 //
 // A development tool for docs/tabletop_kit.md "Results", not a test.
 #include <cstdlib>
@@ -13,10 +15,12 @@
 
 #include <fmt/format.h>
 
+#include "stdlib/tabletop/keypoint_fit.h"
 #include "stdlib/tabletop/scene_io.h"
 #include "stdlib/tabletop/sim/generator.h"
 #include "stdlib/tabletop/sim/scene_writer.h"
 #include "tests/tabletop_kit/e2e_support.h"
+#include "tools/tabletop_families/families.h"
 
 using namespace ksmc::tests::tabletop_kit;
 namespace sim = ksmc::stdlib::tabletop::sim;
@@ -57,10 +61,11 @@ int main(int argc, char** argv) {
   static blk::Binding binding = ksm_binding();
   if (argc > 6)  // sigma_t [mm], sigma_r [deg]
     for (auto& k : binding.kernels)
-      for (auto& src : k.sources) {
-        src.sigma_t = 1e-3 * std::atof(argv[5]);
-        src.sigma_r = std::atof(argv[6]) / 57.29577951308232;
-      }
+      for (auto& src : k.sources)
+        if (auto* p = std::get_if<blk::PosePerturb>(&src)) {
+          p->sigma_t = 1e-3 * std::atof(argv[5]);
+          p->sigma_r = std::atof(argv[6]) / 57.29577951308232;
+        }
   sim::GeneratorOptions opt;
   Score total;
   struct PoseError {
@@ -69,13 +74,29 @@ int main(int argc, char** argv) {
   long err_count = 0;
   std::map<std::string, int> categories;
   for (int i = 0; i < n_scenes; ++i) {
-    const auto g = sim::generate_scene(sim::scene_seed(2026, static_cast<std::uint64_t>(i)), opt);
+    const char* family = std::getenv("KSMC_TTKIT_FAMILY");
+    namespace tf = ksmc::tools::tabletop_families;
+    const auto g = family ? tf::generate(tf::family(family), tf::family_scene_seed(tf::family(family), 2027, static_cast<std::uint64_t>(i)))
+                          : sim::generate_scene(sim::scene_seed(2026, static_cast<std::uint64_t>(i)), opt);
     auto load = tt::parse_scene(nlohmann::json::parse(sim::scene_json(g)), "scene", ".");
     const auto scene = std::make_shared<const tt::Scene>(std::move(load.scene));
     const auto truth = nlohmann::json::parse(sim::truth_json(g));
     const tt::TabletopResult r0 = run_kit(binding, scene, 0, 1 + static_cast<std::uint64_t>(i), options);
     const tt::TabletopResult r = iters == 0 ? r0 : run_kit(binding, scene, iters, 1 + static_cast<std::uint64_t>(i), options);
     score(r, truth, total);
+    std::cout << fmt::format("s{:02} vertical tolerance {:.1f} mm\n", i, 1e3 * blk::Scene(*scene).vertical_tolerance());
+    if (std::getenv("KSMC_TTKIT_FITS"))  // keypoint fits (keypoint_fit.h) against the true poses
+      for (const auto& o : g.objects) {
+        const int idx = r.scene.find(o.id);
+        const auto fit = tt::fit_keypoints(*scene, scene->objects[static_cast<std::size_t>(idx)]);
+        if (!fit.ok) continue;
+        const Eigen::Vector3d d = fit.mean.t - o.clean_pose.t;
+        std::cout << fmt::format("fit {} kp {} inl {}: |dt| {:.2f} mm dz {:.2f} mm rot {:.2f} deg; sd t {:.2f} {:.2f} {:.2f} mm bottom {:.2f} mm\n",
+                                 o.id, scene->objects[static_cast<std::size_t>(idx)].keypoints_model.size(), fit.inliers,
+                                 1e3 * d.norm(), 1e3 * d.z(), 57.29578 * Eigen::AngleAxisd(fit.mean.q * o.clean_pose.q.conjugate()).angle(),
+                                 1e3 * std::sqrt(fit.covariance(0, 0)), 1e3 * std::sqrt(fit.covariance(1, 1)),
+                                 1e3 * std::sqrt(fit.covariance(2, 2)), 1e3 * fit.bottom_sigma);
+      }
     for (const auto& o : g.objects) {  // pose errors of real objects, input and reported state
       if (o.false_kind != sim::FalseKind::none) continue;
       const int idx = r.scene.find(o.id);

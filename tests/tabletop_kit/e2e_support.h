@@ -55,27 +55,53 @@ struct Counts {
 };
 
 struct Score {
-  Counts is_false, is_hidden, support;
-  long undecided = 0;  // false/hidden with probability in [0.4, 0.6]
+  Counts is_false, is_hidden, support, contact;
+  long undecided = 0;           // false/hidden with probability in [0.4, 0.6]
+  long objects = 0;
+  long positives = 0;           // objects truly false or hidden
+  long positive_undecided = 0;  // of those, undecided on the predicate that is true
 };
+
+// A truth id as the kit's scene stores it: numeric ids as their JSON text.
+inline std::string truth_id(const nlohmann::json& id) { return id.is_string() ? id.get<std::string>() : id.dump(); }
+
+// An unordered pair, smaller id first.
+inline std::pair<std::string, std::string> unordered(std::string a, std::string b) {
+  if (b < a) std::swap(a, b);
+  return {a, b};
+}
 
 // Adds one scene: prediction = the kit's result, truth = generator's truth.json.
 inline void score(const tt::TabletopResult& r, const nlohmann::json& truth, Score& s) {
   for (const auto& t : truth.at("objects")) {
-    const int i = r.scene.find(t.at("id").get<std::string>());
+    const int i = r.scene.find(truth_id(t.at("id")));
     if (i < 0) throw std::runtime_error("truth object missing from the scene");
     const auto& p = r.probabilities[static_cast<std::size_t>(i)];
     const auto f = tt::decide(p.false_prob), h = tt::decide(p.hidden_prob);
+    const bool is_false = t.at("false").get<bool>(), is_hidden = t.at("hidden").get<bool>();
     if (!f || !h) ++s.undecided;
-    s.is_false.add(f.value_or(false), t.at("false").get<bool>());
-    s.is_hidden.add(h.value_or(false), t.at("hidden").get<bool>());
+    ++s.objects;
+    if (is_false || is_hidden) {
+      ++s.positives;
+      if ((is_false && !f) || (is_hidden && !h)) ++s.positive_undecided;
+    }
+    s.is_false.add(f.value_or(false), is_false);
+    s.is_hidden.add(h.value_or(false), is_hidden);
   }
-  std::set<std::pair<std::string, std::string>> predicted, truth_edges;
+  auto add_edges = [](const std::set<std::pair<std::string, std::string>>& predicted,
+                      const std::set<std::pair<std::string, std::string>>& truth_edges, Counts& c) {
+    for (const auto& e : predicted) c.add(true, truth_edges.count(e) > 0);
+    for (const auto& e : truth_edges)
+      if (!predicted.count(e)) c.add(false, true);
+  };
+  std::set<std::pair<std::string, std::string>> predicted, truth_edges, predicted_contact, truth_contact;
   for (const auto& e : tt::support_edges(r.evidence)) predicted.insert(e);
-  for (const auto& e : truth.at("support")) truth_edges.insert({e.at(0).get<std::string>(), e.at(1).get<std::string>()});
-  for (const auto& e : predicted) s.support.add(true, truth_edges.count(e) > 0);
-  for (const auto& e : truth_edges)
-    if (!predicted.count(e)) s.support.add(false, true);
+  for (const auto& e : truth.at("support")) truth_edges.insert({truth_id(e.at(0)), truth_id(e.at(1))});
+  add_edges(predicted, truth_edges, s.support);
+  for (const auto& e : tt::unstable_contact_edges(r.evidence)) predicted_contact.insert(unordered(e.first, e.second));
+  if (truth.contains("contact"))
+    for (const auto& e : truth.at("contact")) truth_contact.insert(unordered(truth_id(e.at(0)), truth_id(e.at(1))));
+  add_edges(predicted_contact, truth_contact, s.contact);
 }
 
 inline std::string table(const Score& s) {

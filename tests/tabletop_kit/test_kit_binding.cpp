@@ -2,11 +2,15 @@
 // the binary: `ksmc check` enforces the kit contract), and the kernels come from the moves.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <string>
 
 #include "runtime/domain/config_error.h"
 #include "stdlib/tabletop/kit/domain_spec.h"
+#include "stdlib/tabletop/kit/fit_kernel.h"
 #include "stdlib/tabletop/kit/refine_kernel.h"
+#include "stdlib/tabletop/keypoint_fit.h"
+#include "tests/tabletop_kit/e2e_support.h"
 #include "stdlib/tabletop/scene_io.h"
 #include "tests/tabletop_kit/binding_fixture.h"
 
@@ -43,9 +47,11 @@ TEST_CASE("the generated binding is the fixture's copy of domains/tabletop.ksm, 
   REQUIRE(g.kernels.size() == 1);
   CHECK(g.kernels[0].name == f.kernels[0].name);
   REQUIRE(g.kernels[0].sources.size() == 1);
-  CHECK(g.kernels[0].sources[0].sigma_t == f.kernels[0].sources[0].sigma_t);
-  CHECK(g.kernels[0].sources[0].sigma_r == f.kernels[0].sources[0].sigma_r);
-  CHECK(g.kernels[0].sources[0].candidates == f.kernels[0].sources[0].candidates);
+  const auto& gs = std::get<blk::PosePerturb>(g.kernels[0].sources[0]);
+  const auto& fs = std::get<blk::PosePerturb>(f.kernels[0].sources[0]);
+  CHECK(gs.sigma_t == fs.sigma_t);
+  CHECK(gs.sigma_r == fs.sigma_r);
+  CHECK(gs.candidates == fs.candidates);
   // The extractors of both compute the same evidence on a scene.
   const auto scene = std::make_shared<const ksmc::stdlib::tabletop::Scene>(
       ksmc::stdlib::tabletop::load_scene(std::filesystem::path(KSMC_SOURCE_DIR) / "examples/tabletop/seed_example.json").scene);
@@ -86,4 +92,38 @@ TEST_CASE("several sources of one kernel: each move uses one of them") {
   const kit::RefineKernel k(b.kernels[0], true);
   CHECK(k.sources().size() == 2);
   CHECK(k.sources()[1].candidates == 5);
+}
+
+TEST_CASE("pose.fit kernel: exact independence densities, runs beside refine") {
+  blk::Binding b = ksm_binding();
+  b.kernels.push_back({"fit", "fit", blk::Move::fit, {blk::pose::fit(0.5)}, "kernel fit(o) reverse fit = pose.fit(...)"});
+  b.schedule[0].probabilities = {{"refine", 0.5}, {"fit", 0.5}};
+  // A fit kernel with a perturb source (or the reverse) is refused.
+  blk::Binding wrong = b;
+  wrong.kernels[1].sources = {blk::pose::perturb(0.001, 0.01, 5)};
+  CHECK(binding_error(wrong).find("pose.fit") != std::string::npos);
+  blk::Binding mixed = b;
+  mixed.kernels[0].sources.push_back(blk::pose::fit(1.0));
+  CHECK(binding_error(mixed).find("pose.perturb") != std::string::npos);
+
+  const auto scene = std::make_shared<const ksmc::stdlib::tabletop::Scene>(
+      ksmc::stdlib::tabletop::load_scene(std::filesystem::path(KSMC_SOURCE_DIR) / "examples/tabletop/seed_example.json").scene);
+  kit::TabletopModel model(scene, b);
+  const kit::FitKernel k(b.kernels[1]);
+  ksmc::runtime::mcmc::Rng rng(7);
+  const auto before = model.scene().objects;
+  const auto p = k.propose(model, rng);
+  REQUIRE(model.in_move());
+  std::size_t moved = before.size();
+  for (std::size_t i = 0; i < before.size(); ++i)
+    if (!(model.scene().objects[i].pose.t - before[i].pose.t).isZero()) moved = i;
+  REQUIRE(moved < before.size());
+  const auto& fit = model.block_scene().fit(blk::Scene::body_of_object(moved));
+  const double pick = -std::log(static_cast<double>(model.observed_objects().size()));
+  CHECK(p.log_q_fwd == Approx(ksmc::stdlib::tabletop::fit_log_density(fit, 0.5, model.scene().objects[moved].pose) + pick));
+  CHECK(p.log_q_bwd == Approx(ksmc::stdlib::tabletop::fit_log_density(fit, 0.5, before[moved].pose) + pick));
+  model.reject();
+  // The chain runs with both kernels.
+  const auto r = ksmc::tests::tabletop_kit::run_kit(b, scene, 50, 3);
+  CHECK(r.probabilities.size() == scene->objects.size());
 }

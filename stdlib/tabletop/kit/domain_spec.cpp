@@ -14,6 +14,7 @@
 #include "runtime/mcmc/engine.h"
 #include "stdlib/tabletop/graph_dot.h"
 #include "stdlib/tabletop/hope_import.h"
+#include "stdlib/tabletop/kit/fit_kernel.h"
 #include "stdlib/tabletop/kit/refine_kernel.h"
 #include "stdlib/tabletop/overlay.h"
 #include "stdlib/tabletop/scene_io.h"
@@ -59,7 +60,10 @@ void check_binding(const blocks::Binding& b) {
                                           where, pred.name));
     }
   if (b.kernels.empty()) throw rd::ConfigError(where + ": the tabletop kit needs at least one kernel");
-  for (const auto& k : b.kernels) RefineKernel check(k, true);  // throws for what it cannot run
+  for (const auto& k : b.kernels) {  // throws for what it cannot run
+    if (k.move == blocks::Move::fit) FitKernel check(k);
+    else RefineKernel check(k, true);
+  }
 }
 
 // --cloud: the point-cloud front end (docs/perception.md). The boxes it found are written
@@ -152,7 +156,9 @@ KitSetup make_setup(const blocks::Binding& binding, std::shared_ptr<const Scene>
     return std::make_unique<TabletopModel>(scene, *b, options);
   };
   rd::KernelTable table = rd::make_kernels(binding.kernels, binding.schedule, [&](const auto& decl) {
-    return std::make_shared<const RefineKernel>(decl, options.current_competes);
+    if (decl.move == blocks::Move::fit)
+      return std::shared_ptr<const rm::Kernel>(std::make_shared<const FitKernel>(decl));
+    return std::shared_ptr<const rm::Kernel>(std::make_shared<const RefineKernel>(decl, options.current_competes));
   });
   k.setup.kernels = std::move(table.kernels);
   k.setup.schedule = std::move(table.schedule);

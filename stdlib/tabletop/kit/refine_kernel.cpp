@@ -10,8 +10,10 @@
 namespace ksmc::stdlib::tabletop::kit {
 
 RefineKernel::RefineKernel(const runtime::domain::KernelDecl<blocks::Move, blocks::Source>& decl, bool current_competes)
-    : NamedKernel(decl.name, decl.reverse), sources_(decl.sources), current_competes_(current_competes) {
-  if (decl.move != blocks::Move::perturb || sources_.empty())
+    : NamedKernel(decl.name, decl.reverse), current_competes_(current_competes) {
+  for (const auto& s : decl.sources)
+    if (const auto* p = std::get_if<blocks::PosePerturb>(&s)) sources_.push_back(*p);
+  if (decl.move != blocks::Move::perturb || sources_.empty() || sources_.size() != decl.sources.size())
     throw runtime::domain::ConfigError("kernel " + decl.name + ": the tabletop kit needs pose.perturb sources");
   for (const auto& s : sources_)
     if (!(s.sigma_t > 0.0) || !(s.sigma_r > 0.0) || s.candidates < 1)

@@ -33,9 +33,14 @@ struct BoxItem {
   std::array<double, 3> vertical_axis_odds{1.0, 1.0, 1.0};
 };
 
-std::span<const Product> product_catalogue();
+// Which products a scene draws from: the household boxes, or those plus objects from 2 cm
+// to 40 cm (dice and cubes, thin boards and cases, shoe boxes, long boxes).
+enum class Catalogue { household, wide };
 
-// Draws a product uniformly from the catalogue, then its size and density.
-BoxItem draw_box(Rng& rng);
+std::span<const Product> product_catalogue(Catalogue catalogue = Catalogue::household);
+
+// Draws a product uniformly from the catalogue, then its size and density. A product whose
+// minimum and maximum sizes are both cubes (equal extents) draws one edge: a cube.
+BoxItem draw_box(Rng& rng, Catalogue catalogue = Catalogue::household);
 
 }  // namespace ksmc::stdlib::tabletop::sim

@@ -80,6 +80,10 @@ std::string_view to_string(FalseKind kind) {
     case FalseKind::moved_intersecting: return "moved_intersecting";
     case FalseKind::extra_floating: return "extra_floating";
     case FalseKind::moved_floating: return "moved_floating";
+    case FalseKind::shifted_copy: return "shifted_copy";
+    case FalseKind::duplicate: return "duplicate";
+    case FalseKind::wrong_size: return "wrong_size";
+    case FalseKind::flipped: return "flipped";
   }
   return "none";
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "stdlib/tabletop/sim/catalogue.h"
+#include "stdlib/tabletop/sim/false_kinds.h"
 #include "stdlib/tabletop/sim/relations.h"
 
 namespace ksmc::stdlib::tabletop::sim {
@@ -23,6 +24,10 @@ struct CorruptionParams {
   double min_float_gap = 0.022;      // m, clearance of a floating false estimate to everything
   double min_float_tilt = 0.2094395; // rad (12 deg)
   double max_float_tilt = 0.6981317; // rad (40 deg)
+  // Share of false estimates drawn from the further kinds of false_kinds.h (shifted copy,
+  // duplicated detection, wrong size, flipped) instead of the four kinds above.
+  double extra_kind_rate = 0.0;
+  FalseKindParams extra_kinds;
 };
 
 // Marks supporting boxes as undetected with probability hidden_rate, keeping only removals that
@@ -40,7 +45,10 @@ bool estimate_is_consistent(std::span<const Box> boxes, const Relations& rel, co
 // Boxes present in the estimate whose every supporter was removed (and that are not on the table).
 std::vector<bool> hidden_boxes(std::size_t count, const Relations& rel, const std::vector<bool>& removed);
 
-enum class FalseKind { none, extra_intersecting, moved_intersecting, extra_floating, moved_floating };
+enum class FalseKind {
+  none, extra_intersecting, moved_intersecting, extra_floating, moved_floating,
+  shifted_copy, duplicate, wrong_size, flipped
+};
 std::string_view to_string(FalseKind kind);
 
 struct FalseEstimate {

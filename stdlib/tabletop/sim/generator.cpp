@@ -83,11 +83,8 @@ void corrupt(std::uint64_t seed, int attempt, const GeneratorOptions& o, Draft& 
   std::vector<Box> placed_false;
   std::vector<Box> floating_false;
   std::vector<std::size_t> targeted;  // boxes a false estimate intersects: their estimate stays put
-  for (std::size_t k = 0; k < real_count; ++k) {
-    if (!rng.bernoulli(o.corruption.false_rate)) continue;
-    const bool floating = rng.bernoulli(0.5);
-    bool moved = rng.bernoulli(0.5);
-    // A moved estimate must belong to a detected, non-hidden box that carries nothing detected.
+  // A moved estimate must belong to a detected, non-hidden box that carries nothing detected.
+  auto movable_objects = [&] {
     std::vector<std::size_t> movable;
     for (std::size_t c = 0; c < real_count; ++c) {
       const auto& obj = d.objects[c];
@@ -104,9 +101,65 @@ void corrupt(std::uint64_t seed, int attempt, const GeneratorOptions& o, Draft& 
       missing[static_cast<std::size_t>(obj.physical)] = true;
       if (estimate_is_consistent(boxes, d.relations, missing, o.corruption)) movable.push_back(c);
     }
+    return movable;
+  };
+  // Floating false estimates placed earlier must stay clear of everything.
+  auto crowds = [&](const std::optional<Box>& box) {
+    return std::any_of(floating_false.begin(), floating_false.end(), [&](const Box& f) {
+      return box && sat_overlap(*box, f) > -o.corruption.min_float_gap && box_distance(*box, f) < o.corruption.min_float_gap;
+    });
+  };
+  auto pick = [&](const std::vector<std::size_t>& from) {
+    return from[static_cast<std::size_t>(rng.uniform_int(0, static_cast<int>(from.size()) - 1))];
+  };
+  for (std::size_t k = 0; k < real_count; ++k) {
+    if (!rng.bernoulli(o.corruption.false_rate)) continue;
+    if (o.corruption.extra_kind_rate > 0.0 && rng.bernoulli(o.corruption.extra_kind_rate)) {
+      const ExtraKind kind = kExtraKinds[rng.weighted_index(o.corruption.extra_kinds.odds)];
+      const bool copy = kind == ExtraKind::shifted_copy || kind == ExtraKind::duplicate;
+      std::vector<std::size_t> candidates;
+      if (copy) {
+        for (std::size_t c = 0; c < real_count; ++c)
+          if (d.objects[c].false_kind == FalseKind::none) candidates.push_back(c);
+      } else {
+        candidates = movable_objects();
+      }
+      if (candidates.empty()) continue;
+      const std::size_t c = pick(candidates);
+      const Box original{d.objects[c].item.size, d.objects[c].clean_pose};
+      const auto& p = o.corruption.extra_kinds;
+      std::optional<Box> box = kind == ExtraKind::shifted_copy ? shifted_copy(rng, original, p)
+                               : kind == ExtraKind::duplicate  ? duplicate_detection(rng, original, p)
+                               : kind == ExtraKind::wrong_size ? wrong_size(rng, original, p)
+                                                               : flipped(rng, original, p);
+      if (!box || crowds(box)) continue;
+      placed_false.push_back(*box);
+      const FalseKind fk = kind == ExtraKind::shifted_copy ? FalseKind::shifted_copy
+                           : kind == ExtraKind::duplicate  ? FalseKind::duplicate
+                           : kind == ExtraKind::wrong_size ? FalseKind::wrong_size
+                                                           : FalseKind::flipped;
+      if (copy) {
+        targeted.push_back(c);
+        SceneObject s;
+        s.item = d.objects[c].item;
+        s.false_kind = fk;
+        s.clean_pose = box->pose;
+        d.objects.push_back(s);
+      } else {
+        auto& obj = d.objects[c];
+        obj.false_kind = fk;
+        obj.stable = false;
+        obj.clean_pose = box->pose;
+        obj.item.size = box->size;
+      }
+      continue;
+    }
+    const bool floating = rng.bernoulli(0.5);
+    bool moved = rng.bernoulli(0.5);
+    const std::vector<std::size_t> movable = movable_objects();
     if (movable.empty()) moved = false;
     const std::size_t mover = moved ? movable[static_cast<std::size_t>(rng.uniform_int(0, static_cast<int>(movable.size()) - 1))] : 0;
-    const BoxItem item = moved ? d.objects[mover].item : draw_box(rng);
+    const BoxItem item = moved ? d.objects[mover].item : draw_box(rng, o.layout.catalogue);
 
     std::optional<Box> box;
     if (floating) {
@@ -124,12 +177,7 @@ void corrupt(std::uint64_t seed, int attempt, const GeneratorOptions& o, Draft& 
         const auto t = targets[static_cast<std::size_t>(rng.uniform_int(0, static_cast<int>(targets.size()) - 1))];
         box = place_intersecting(rng, item, Box{d.objects[t].item.size, d.objects[t].clean_pose}, o.corruption);
         if (box) targeted.push_back(t);
-        // Floating false estimates placed earlier must stay clear of everything.
-        const bool crowds = std::any_of(floating_false.begin(), floating_false.end(), [&](const Box& f) {
-          return box && sat_overlap(*box, f) > -o.corruption.min_float_gap &&
-                 box_distance(*box, f) < o.corruption.min_float_gap;
-        });
-        if (crowds) box.reset();
+        if (crowds(box)) box.reset();
       }
     }
     if (!box) continue;
@@ -219,6 +267,7 @@ GeneratedScene generate_scene(std::uint64_t seed, const GeneratorOptions& o) {
   validate(o);
   GeneratedScene scene;
   scene.seed = seed;
+  scene.numeric_ids = o.numeric_ids;
   scene.camera = o.camera;
   Rng count_rng(stage_seed(seed, 0, kCount));
   const int n = count_rng.uniform_int(o.min_objects, o.max_objects);
@@ -245,7 +294,7 @@ GeneratedScene generate_scene(std::uint64_t seed, const GeneratorOptions& o) {
     }
     std::map<int, int> object_of_physical;  // real, non-false objects only
     for (std::size_t i = 0; i < objs.size(); ++i) {
-      objs[i].id = fmt::format("box_{}", i);
+      objs[i].id = o.numeric_ids ? fmt::format("{}", i) : fmt::format("box_{}", i);
       if (objs[i].false_kind == FalseKind::none) object_of_physical[objs[i].physical] = static_cast<int>(i);
     }
     auto mapped = [&](int physical) -> std::optional<int> {

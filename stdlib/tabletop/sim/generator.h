@@ -25,6 +25,7 @@ struct GeneratorOptions {
   CameraPlacement camera_placement;
   KeypointParams keypoints;
   Camera camera;
+  bool numeric_ids = false;  // ids 0, 1, ... written as JSON numbers instead of "box_0", ...
 };
 
 // Throws std::invalid_argument naming the offending option.
@@ -52,6 +53,7 @@ struct SceneObject {
 
 struct GeneratedScene {
   std::uint64_t seed = 0;
+  bool numeric_ids = false;          // ids are written as JSON numbers
   Camera camera;
   Pose table_from_camera;            // camera pose in the table frame
   std::vector<PhysicalBox> physical;

@@ -77,6 +77,11 @@ Eigen::Quaterniond resting_orientation(Rng& rng, int up_axis, double yaw) {
 // Lowers/raises the box so that its lowest point is at `z`.
 void set_bottom(Box& b, double z) { b.pose.t.z() += z - lowest_z(b); }
 
+// True when `b` comes within 3 mm of a body already placed.
+bool clashes(const Box& b, const std::vector<SimBody>& bodies) {
+  return std::any_of(bodies.begin(), bodies.end(), [&](const SimBody& o) { return sat_overlap(b, o.box) > -0.003; });
+}
+
 // Tries to drop `item` leaning against the bottom box of a column. Returns false if no free spot.
 bool place_leaner(Rng& rng, const BoxItem& item, const Box& base, const std::vector<SimBody>& bodies,
                   const Eigen::Vector2d& region, Box& out) {
@@ -110,10 +115,35 @@ bool place_leaner(Rng& rng, const BoxItem& item, const Box& base, const std::vec
                                                      Eigen::Vector2d(-n.y(), n.x());
     b.pose.t.z() = 0.0;
     set_bottom(b, 0.002);
-    if (std::abs(b.pose.t.x()) > region.x() || std::abs(b.pose.t.y()) > region.y()) continue;
-    const bool clash = std::any_of(bodies.begin(), bodies.end(),
-                                   [&](const SimBody& o) { return sat_overlap(b, o.box) > -0.003; });
-    if (clash) continue;
+    if (std::abs(b.pose.t.x()) > region.x() || std::abs(b.pose.t.y()) > region.y() || clashes(b, bodies)) continue;
+    out = b;
+    return true;
+  }
+  return false;
+}
+
+// Tries to drop `item`, lying flat, on the top face of `base`, at the end of its long axis
+// away from `upper` (the box already on it), so that `base` carries both.
+bool place_beside(Rng& rng, const BoxItem& item, const Box& base, const Box& upper, const std::vector<SimBody>& bodies,
+                  Box& out) {
+  const Footprint fb = footprint(base);
+  const int long_axis = fb.half.x() >= fb.half.y() ? 0 : 1;
+  const Eigen::Vector2d u = Eigen::Rotation2Dd(fb.yaw) * Eigen::Vector2d::Unit(long_axis);
+  const double side = (upper.pose.t.head<2>() - fb.centre).dot(u) > 0.0 ? -1.0 : 1.0;
+  for (int attempt = 0; attempt < 12; ++attempt) {
+    Box b;
+    b.size = item.size;
+    const double yaw = fb.yaw + (rng.bernoulli(0.5) ? 0.0 : kPi / 2) + rng.uniform(-0.1, 0.1);
+    b.pose.q = resting_orientation(rng, smallest_axis(item.size), yaw);
+    const Footprint f = footprint(b);
+    // Half extent of the new box along u.
+    const double reach = std::abs(std::cos(f.yaw - std::atan2(u.y(), u.x()))) * f.half.x() +
+                         std::abs(std::sin(f.yaw - std::atan2(u.y(), u.x()))) * f.half.y();
+    if (reach > 0.8 * fb.half[long_axis]) continue;  // would hang over the centre
+    const Eigen::Vector2d c = fb.centre + side * (fb.half[long_axis] - reach) * u;
+    b.pose.t = Eigen::Vector3d(c.x(), c.y(), 0.0);
+    set_bottom(b, highest_z(base) + kDropGap);
+    if (clashes(b, bodies)) continue;
     out = b;
     return true;
   }
@@ -140,7 +170,7 @@ std::optional<Layout> draw_layout(Rng& rng, int n, const TableSpec& table, const
   while (remaining > 0) {
     const int height = std::min<int>(remaining, 1 + static_cast<int>(rng.weighted_index(params.stack_height_odds)));
     std::vector<BoxItem> members;
-    for (int i = 0; i < height; ++i) members.push_back(draw_box(rng));
+    for (int i = 0; i < height; ++i) members.push_back(draw_box(rng, params.catalogue));
     remaining -= height;
 
     if (height == 1 && !column_bases.empty() && rng.bernoulli(params.lean_rate)) {
@@ -219,6 +249,19 @@ std::optional<Layout> draw_layout(Rng& rng, int n, const TableSpec& table, const
         column_of.push_back(static_cast<int>(columns.size()) - 1);
       }
       placed_column = true;
+      if (params.side_by_side_rate > 0.0 && height >= 2 && remaining > 0 && rng.bernoulli(params.side_by_side_rate)) {
+        const BoxItem extra = draw_box(rng, params.catalogue);
+        Box beside;
+        const auto& col = columns.back();
+        if (place_beside(rng, extra, layout.bodies[col[0]].box, layout.bodies[col[1]].box, layout.bodies, beside)) {
+          columns.back().insert(columns.back().begin() + 1, layout.bodies.size());
+          layout.items.push_back(extra);
+          layout.bodies.push_back({beside, extra.mass, extra.friction});
+          placed.push_back(footprint(beside));
+          column_of.push_back(static_cast<int>(columns.size()) - 1);
+          --remaining;
+        }
+      }
     }
     if (placed_column) continue;
     // No free spot on the table: put the boxes on top of existing columns (at most 3 high).

@@ -15,6 +15,10 @@ struct LayoutParams {
   double lean_rate = 0.4;       // chance that a single box is dropped leaning on a column
   double clearance = 0.012;     // m between the footprints of neighbouring columns
   int placement_tries = 120;    // random positions tried per column before giving up
+  Catalogue catalogue = Catalogue::household;
+  // Chance that a column of two or more gets a second box on its bottom box, beside the
+  // first upper one (one supporter carrying several boxes).
+  double side_by_side_rate = 0.0;
 };
 
 struct Layout {

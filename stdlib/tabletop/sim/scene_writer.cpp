@@ -37,6 +37,11 @@ std::string point_list(const Points& pts, Format format, const std::string& inde
 
 std::string quoted(const std::string& s) { return "\"" + s + "\""; }
 
+// An object id as JSON: a number when the scene uses numeric ids (the table stays "table").
+std::string id_json(const GeneratedScene& scene, const std::string& id) {
+  return scene.numeric_ids && id != "table" ? id : quoted(id);
+}
+
 }  // namespace
 
 std::string scene_json(const GeneratedScene& scene) {
@@ -51,7 +56,7 @@ std::string scene_json(const GeneratedScene& scene) {
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
     out += i == 0 ? "\n" : ",\n";
-    out += fmt::format("    {{\"id\": {}, \"model\": {}, \"size\": {},\n", quoted(o.id),
+    out += fmt::format("    {{\"id\": {}, \"model\": {}, \"size\": {},\n", id_json(scene, o.id),
                        quoted(std::string(o.item.model)), vec(o.item.size, 5));
     out += fmt::format("     \"pose\": {},\n", pose_json(camera_from_table * o.estimate));
     const std::string indent(18, ' ');
@@ -70,15 +75,15 @@ std::string truth_json(const GeneratedScene& scene) {
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
     out += i == 0 ? "\n" : ",\n";
-    out += fmt::format("    {{\"id\": {}, \"false\": {}, \"hidden\": {}, \"stable\": {}}}", quoted(o.id),
+    out += fmt::format("    {{\"id\": {}, \"false\": {}, \"hidden\": {}, \"stable\": {}}}", id_json(scene, o.id),
                        o.false_kind != FalseKind::none, o.hidden, o.stable);
   }
   out += "\n  ],\n";
-  auto pairs = [](const std::vector<std::pair<std::string, std::string>>& list) {
+  auto pairs = [&](const std::vector<std::pair<std::string, std::string>>& list) {
     std::string s = "[";
     for (std::size_t i = 0; i < list.size(); ++i) {
       if (i > 0) s += ", ";
-      s += fmt::format("[{}, {}]", quoted(list[i].first), quoted(list[i].second));
+      s += fmt::format("[{}, {}]", id_json(scene, list[i].first), id_json(scene, list[i].second));
     }
     return s + "]";
   };

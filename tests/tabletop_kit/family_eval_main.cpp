@@ -1,0 +1,83 @@
+// tabletop_family_eval: the per-family table of the table-top kit (issue 12).
+//   tabletop_family_eval [--families all|a,b,...] [--scenes N] [--seed S] [--iterations I]
+//                        [--binding ksm|seed] [--kinds] [--write-db DIR]
+// --write-db writes training worlds for `ksmc learn` (write_training_dbs) instead of scoring.
+// Prints one row per family: false / hidden / support / contact P R F1 and the undecided
+// share of the true positives (docs/tabletop_families.md).
+#include <charconv>
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <iostream>
+#include <sstream>
+
+#include "tests/tabletop_kit/family_eval.h"
+
+using namespace ksmc::tests::tabletop_kit;
+
+namespace {
+
+long number(std::string_view flag, std::string_view text) {
+  long v = 0;
+  const auto* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, v);
+  if (ec != std::errc() || ptr != end || v < 0) throw std::invalid_argument(fmt::format("{}: '{}' is not a count", flag, text));
+  return v;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    FamilyRun run;
+    std::string which = "all", binding_name = "ksm", db_dir;
+    bool kinds = false;
+    const std::vector<std::string_view> args(argv + 1, argv + argc);
+    for (std::size_t i = 0; i < args.size(); ++i) {
+      const std::string_view flag = args[i];
+      if (flag == "--kinds") {
+        kinds = true;
+        continue;
+      }
+      if (i + 1 >= args.size()) throw std::invalid_argument(fmt::format("{}: missing value", flag));
+      const std::string_view v = args[++i];
+      if (flag == "--families") which = v;
+      else if (flag == "--scenes") run.scenes = number(flag, v);
+      else if (flag == "--seed") run.seed = static_cast<std::uint64_t>(number(flag, v));
+      else if (flag == "--iterations") run.iterations = static_cast<std::uint64_t>(number(flag, v));
+      else if (flag == "--binding") binding_name = v;
+      else if (flag == "--write-db") db_dir = v;
+      else throw std::invalid_argument(fmt::format("unknown option '{}'", flag));
+    }
+    if (binding_name != "ksm" && binding_name != "seed") throw std::invalid_argument("--binding: ksm or seed");
+    const blk::Binding& binding = binding_name == "ksm" ? ksm_binding() : seed_binding();
+    std::vector<const tf::Family*> chosen;
+    if (which == "all") {
+      for (const auto& f : tf::families()) chosen.push_back(&f);
+    } else {
+      std::stringstream ss(which);
+      for (std::string name; std::getline(ss, name, ',');) chosen.push_back(&tf::family(name));
+    }
+    if (!db_dir.empty()) {
+      long n = 0;
+      for (const tf::Family* f : chosen) n += write_training_dbs(*f, binding, run, db_dir);
+      std::cout << fmt::format("{} training worlds written to {}\n", n, db_dir);
+      return 0;
+    }
+    std::vector<FamilyScore> rows;
+    for (const tf::Family* f : chosen) {
+      const auto t0 = std::chrono::steady_clock::now();
+      rows.push_back(evaluate_family(*f, binding, run));
+      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      std::cerr << fmt::format("{}: {} scenes in {:.1f} s\n", f->name, run.scenes, s);
+    }
+    std::cout << fmt::format("binding {}, seed {}, {} scenes per family, {} iterations\n", binding_name, run.seed,
+                             run.scenes, run.iterations)
+              << family_table(rows);
+    if (kinds) std::cout << false_kind_lines(rows);
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tabletop_family_eval: %s\n", e.what());
+    return 2;
+  }
+}
