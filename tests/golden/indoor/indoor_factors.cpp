@@ -14,6 +14,7 @@ constexpr double kW_hall_333a = 2.1972245773362196;  // prob 0.9
 constexpr double kW_corr_a5f2 = 1.3862943611198908;  // prob 0.8
 constexpr double kW_room_df3c = 0.8472978603872034;  // prob 0.7
 constexpr double kW_sale_3041 = 2.1972245773362196;  // prob 0.9
+constexpr double kW_one_space = 3;  // w 3.0
 
 }  // namespace
 
@@ -26,6 +27,9 @@ const mln::Program& program() {
     p.add_predicate({"HaLi", {kType_unit}, false, false, -1});
     p.add_predicate({"MulDoor", {kType_unit}, false, false, -1});
     p.add_predicate({"Adj", {kType_unit, kType_unit}, false, false, -1});
+    p.add_predicate({"Thin", {kType_unit}, false, false, -1});
+    p.add_predicate({"Blocked", {kType_unit}, false, false, -1});
+    p.add_predicate({"OpenJoin", {kType_unit, kType_unit}, false, false, -1});
     p.add_predicate({"Room", {kType_unit}, true, false, -1});
     p.add_predicate({"Corr", {kType_unit}, true, false, -1});
     p.add_predicate({"Hall", {kType_unit}, true, false, -1});
@@ -78,6 +82,21 @@ const mln::Program& program() {
                   {{"a", kType_unit, false}, {"b", kType_unit, false}},
                   {{kPred_Room, true, {mln::Term::var(0)}}, {kPred_Room, true, {mln::Term::var(1)}}, {kPred_Adj, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_SaLe, false, {mln::Term::var(0), mln::Term::var(1)}}},
                   kW_sale_3041, false, "Room(a) ^ Room(b) ^ Adj(a, b) => SaLe(a, b)", {"domains/indoor.ksm", 0}});
+    // no_sliver: hard !Thin(u)
+    p.add_clause({"no_sliver",
+                  {{"u", kType_unit, false}},
+                  {{kPred_Thin, true, {mln::Term::var(0)}}},
+                  mln::kHardWeight, true, "!Thin(u)", {"domains/indoor.ksm", 0}});
+    // not_wall: hard !Blocked(u)
+    p.add_clause({"not_wall",
+                  {{"u", kType_unit, false}},
+                  {{kPred_Blocked, true, {mln::Term::var(0)}}},
+                  mln::kHardWeight, true, "!Blocked(u)", {"domains/indoor.ksm", 0}});
+    // one_space: !OpenJoin(a, b)
+    p.add_clause({"one_space",
+                  {{"a", kType_unit, false}, {"b", kType_unit, false}},
+                  {{kPred_OpenJoin, true, {mln::Term::var(0), mln::Term::var(1)}}},
+                  kW_one_space, false, "!OpenJoin(a, b)", {"domains/indoor.ksm", 0}});
     return p;
   }();
   return p;
@@ -220,6 +239,45 @@ void ground_sale_3041(mln::FactorContext& g, std::int32_t clause) {
   }
 }
 
+// no_sliver: hard !Thin(u)
+void ground_no_sliver(mln::FactorContext& g, std::int32_t clause) {
+  const std::int32_t n_unit = g.size(kType_unit);
+  for (std::int32_t v_u = 0; v_u < n_unit; ++v_u) {
+    if (!g.ev(kPred_Thin, v_u)) {  // !Thin(u)
+      continue;
+    }
+    g.begin();
+    g.hard(clause, {v_u});
+  }
+}
+
+// not_wall: hard !Blocked(u)
+void ground_not_wall(mln::FactorContext& g, std::int32_t clause) {
+  const std::int32_t n_unit = g.size(kType_unit);
+  for (std::int32_t v_u = 0; v_u < n_unit; ++v_u) {
+    if (!g.ev(kPred_Blocked, v_u)) {  // !Blocked(u)
+      continue;
+    }
+    g.begin();
+    g.hard(clause, {v_u});
+  }
+}
+
+// one_space: !OpenJoin(a, b)
+void ground_one_space(mln::FactorContext& g, std::int32_t clause) {
+  const std::int32_t n_unit = g.size(kType_unit);
+  for (std::int32_t v_a = 0; v_a < n_unit; ++v_a) {
+    for (std::int32_t v_b = 0; v_b < n_unit; ++v_b) {
+      if (!g.ev(kPred_OpenJoin, std::int64_t{v_a} * n_unit + v_b)) {  // !OpenJoin(a, b)
+        g.satisfied(kW_one_space);
+        continue;
+      }
+      g.begin();
+      g.soft(kW_one_space, clause);
+    }
+  }
+}
+
 }  // namespace
 
 mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) {
@@ -235,6 +293,9 @@ mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) 
   ground_corr_a5f2(g, clause++);
   ground_room_df3c(g, clause++);
   ground_sale_3041(g, clause++);
+  ground_no_sliver(g, clause++);
+  ground_not_wall(g, clause++);
+  ground_one_space(g, clause++);
   mln::fold_forced_atoms(grounding);
   return grounding;
 }
