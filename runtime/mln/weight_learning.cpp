@@ -8,7 +8,9 @@
 #include <string>
 
 #include "runtime/mln/error.h"
+#include "runtime/mln/components.h"
 #include "runtime/mln/exact.h"
+#include "runtime/mln/mcsat.h"
 
 namespace ksmc::runtime::mln {
 namespace {
@@ -222,7 +224,8 @@ std::vector<CllSet> tabulate_cll(std::span<const TrainingSet> data, const Weight
 // Conditional log-likelihood sum_worlds [sum_c w_c n_c(x) - log Z(w)] and its exact
 // gradient: observed counts minus expected counts, E[n_c] = P(clause c satisfied) from
 // exact inference (junction tree or enumeration) on the reweighted network.
-double cll(const std::vector<CllSet>& sets, const WeightTying& tying, std::span<const double> w, std::vector<double>& grad) {
+double cll(const std::vector<CllSet>& sets, const WeightTying& tying, std::span<const double> w, std::vector<double>& grad,
+           const ExactOptions& exact = {}) {
   double total = 0.0;
   std::vector<double> prob;
   for (const auto& s : sets) {
@@ -231,10 +234,109 @@ double cll(const std::vector<CllSet>& sets, const WeightTying& tying, std::span<
       total += w[j] * s.counts[j];
       grad[j] += s.counts[j];
     }
-    total -= s.worlds * exact_clause_probabilities(reweighted(*s.net, tying, w), prob).log_z;
+    total -= s.worlds * exact_clause_probabilities(reweighted(*s.net, tying, w), prob, exact).log_z;
     for (const auto& [c, sh] : s.learned) grad[sh.param] -= s.worlds * sh.scale * prob[c];
   }
   return total;
+}
+
+// Which expectations the conditional likelihood uses (LearnOptions::expectations): fills
+// r.gradient (the exact solvers' summary) or r.sampled / r.too_large_*; returns r.sampled.
+bool choose_expectations(std::span<const TrainingSet> data, const LearnOptions& o, LearnResult& r) {
+  r.sampled = o.expectations == Expectations::Sampled;
+  if (r.sampled) return true;
+  ExactSummary summary;
+  for (std::size_t si = 0; si < data.size() && r.too_large_set < 0; ++si) {
+    const GroundNetwork& net = data[si].network;
+    for (const auto& comp : split_components(net)) {
+      const ExactPlan plan = plan_exact(net, comp, o.exact);
+      if (plan.solver != ExactPlan::Solver::TooLarge) {
+        summary.add(plan);
+        continue;
+      }
+      if (o.expectations == Expectations::Exact)
+        throw MlnError("training set " + std::to_string(si + 1) + ": " + too_large_message(net, comp, o.exact));
+      r.too_large_set = static_cast<std::int32_t>(si);
+      r.too_large_reason = "a component of " + std::to_string(comp.atoms.size()) + " free atoms (" +
+                           std::to_string(static_cast<long long>(std::ceil(plan.bits))) +
+                           " bits of state) that neither enumeration nor variable elimination fits";
+      break;
+    }
+  }
+  r.sampled = r.too_large_set >= 0;
+  if (!r.sampled) r.gradient = "exact gradient (" + summary.describe() + ")";
+  return r.sampled;
+}
+
+// The per-world mean and variance of each parameter's scaled satisfied-clause count over
+// MC-SAT samples of one set's reweighted network.
+void sampled_moments(const CllSet& s, const WeightTying& tying, std::span<const double> w, McSatOptions mo,
+                     std::vector<double>& mean, std::vector<double>& var) {
+  const GroundNetwork net = reweighted(*s.net, tying, w);
+  const std::size_t np = w.size();
+  std::vector<double> n(np), sum(np, 0.0), sq(np, 0.0);
+  double count = 0.0;
+  mo.on_sample = [&](std::span<const std::uint8_t> x) {
+    std::fill(n.begin(), n.end(), 0.0);
+    for (const auto& [c, sh] : s.learned)
+      if (satisfied(net, c, x)) n[sh.param] += sh.scale;
+    for (std::size_t j = 0; j < np; ++j) {
+      sum[j] += n[j];
+      sq[j] += n[j] * n[j];
+    }
+    count += 1.0;
+  };
+  mc_sat(net, mo);
+  if (count <= 0.0) throw MlnError("weight learning: MC-SAT drew no samples");
+  mean.assign(np, 0.0);
+  var.assign(np, 0.0);
+  for (std::size_t j = 0; j < np; ++j) {
+    mean[j] = sum[j] / count;
+    var[j] = std::max(0.0, sq[j] / count - mean[j] * mean[j]);
+  }
+}
+
+// The sampled path's damped diagonal Newton ascent (weight_learning.h), Polyak-averaged.
+void sampled_ascent(const std::vector<CllSet>& sets, const WeightTying& tying, std::vector<double> w, double worlds,
+                    const LearnOptions& o, LearnResult& r) {
+  const std::size_t np = w.size();
+  const double inv_var = 1.0 / (o.prior_sigma * o.prior_sigma);
+  const std::int32_t iterations = std::max<std::int32_t>(1, o.sampled_iterations);
+  const std::int32_t half = iterations / 2;
+  std::vector<double> g(np), h(np), hbar(np), mean, var, avg(np, 0.0);
+  McSatOptions mo;
+  mo.samples = o.samples;
+  mo.burn_in = o.burn_in;
+  for (std::int32_t t = 1; t <= iterations; ++t) {
+    std::fill(g.begin(), g.end(), 0.0);
+    std::fill(h.begin(), h.end(), 0.0);
+    mo.seed = o.seed + static_cast<std::uint64_t>(t);
+    for (const auto& s : sets) {
+      sampled_moments(s, tying, w, mo, mean, var);
+      for (std::size_t j = 0; j < np; ++j) {
+        g[j] += s.counts[j] - s.worlds * mean[j];
+        h[j] += s.worlds * var[j];
+      }
+    }
+    const double eta = 1.0 / std::sqrt(static_cast<double>(t));
+    for (std::size_t j = 0; j < np; ++j) {
+      const double gj = (g[j] - w[j] * inv_var) / worlds, hj = (h[j] + inv_var) / worlds;
+      if (t == 1) hbar[j] = hj;
+      // The curvature of earlier iterations: dividing by this iteration's own sample
+      // variance would correlate step and noise (a run with few violations of a clause
+      // has both a low expected-count gap and a small variance), biasing the weight down.
+      w[j] += eta * std::clamp(gj / hbar[j], -1.0, 1.0);
+      hbar[j] = 0.8 * hbar[j] + 0.2 * hj;
+      if (t > half) avg[j] += w[j];
+    }
+  }
+  for (double& x : avg) x /= static_cast<double>(iterations - half);
+  r.params = std::move(avg);
+  r.iterations = iterations;
+  r.converged = false;
+  r.objective = std::numeric_limits<double>::quiet_NaN();
+  r.gradient = "sampled expectations (MC-SAT, " + std::to_string(o.samples) + " samples, " +
+               std::to_string(iterations) + " diagonal Newton iterations)";
 }
 
 }  // namespace
@@ -260,9 +362,15 @@ LearnResult learn_weights(std::span<const TrainingSet> data, const WeightTying& 
     data_term = [&](std::span<const double> w, std::vector<double>& g) { return pll(conds, w, g); };
   } else {
     sets = tabulate_cll(data, tying, worlds);
-    data_term = [&](std::span<const double> w, std::vector<double>& g) { return cll(sets, tying, w, g); };
+    data_term = [&](std::span<const double> w, std::vector<double>& g) { return cll(sets, tying, w, g, options.exact); };
   }
   if (worlds <= 0.0) throw MlnError("weight learning: no training worlds");
+  LearnResult r;
+  if (options.objective == Objective::ConditionalLikelihood && choose_expectations(data, options, r)) {
+    if (options.samples <= 0) throw MlnError("weight learning: the sampled expectations need at least one sample");
+    sampled_ascent(sets, tying, std::move(initial), worlds, options, r);
+    return r;
+  }
   const double inv_var = 1.0 / (options.prior_sigma * options.prior_sigma);
   // The objective per world: (data term - prior) / worlds, and its gradient.
   auto eval = [&](std::span<const double> w, std::vector<double>& g) {
@@ -275,7 +383,6 @@ LearnResult learn_weights(std::span<const TrainingSet> data, const WeightTying& 
     }
     return f / worlds;
   };
-  LearnResult r;
   std::vector<double> w = std::move(initial), g, wn, gn;
   double f = eval(w, g);
   double step = 1.0;
