@@ -243,6 +243,8 @@ int cmd_learn(Invocation& inv) {
   inv.learn.out_path = inv.out_dir;
   inv.learn.per_formula = inv.per_formula;
   if (inv.infer.method != "auto") inv.learn.method = inv.infer.method;
+  inv.learn.samples = inv.infer.samples;
+  inv.learn.seed = inv.infer.seed;
   return learn::run_learn(ir, inv.files.front(), std::vector<std::string>(inv.files.begin() + 1, inv.files.end()),
                           inv.learn, std::cout, std::cerr);
 }
@@ -288,7 +290,7 @@ const std::vector<Command>& commands() {
        [](Invocation& inv) {
          return alchemy::run_import(inv.files, inv.infer.queries, inv.out_dir, std::cout, std::cerr, inv.per_formula);
        }},
-      {"learn", "ksmc learn FILE.ksm --data A.db [B.db ...] [--method pll|cll] [--l2 SIGMA] [--per-formula] [--out FILE]",
+      {"learn", "ksmc learn FILE.ksm --data A.db [B.db ...] [--method pll|cll] [--expectations auto|exact|sampled] [--samples N] [--seed N] [--l2 SIGMA] [--per-formula] [--out FILE]",
        "learn FILE's soft rule weights from training worlds; writes FILE with the new weights (layout kept)",
        cmd_learn},
       {"kit", "ksmc kit FILE", "print `<domain> <kit>`: FILE's domain name and the stdlib kit that runs it", cmd_kit},
@@ -326,6 +328,9 @@ void print_help(std::ostream& out) {
       << "  --max-ground-clauses N  infer: refuse a grounding estimated above N clauses (default 50,000,000)\n"
       << "  --data        learn: the files that follow are training worlds (.db)\n"
       << "  --l2 SIGMA    learn: standard deviation of the Gaussian prior on the weights (default 10)\n"
+      << "  --expectations E  learn --method cll: expected clause counts by exact inference (exact), from\n"
+      << "                MC-SAT samples (sampled, --samples per gradient, default 1000, --seed), or exact\n"
+      << "                where it applies to every training network, sampled otherwise (auto, default)\n"
       << "  --per-formula infer, learn, import-mln: a soft formula's weight counts once when the whole formula\n"
       << "                holds (default: split as w/k over its k CNF clauses, as Alchemy does)\n"
       << "  --help        this text\n"
@@ -351,7 +356,7 @@ int run(int argc, char** argv) {
     // Options that take a value.
     static const std::vector<std::string> kValued{"--out", "-o", "--evidence", "--query", "--method",
                                                   "--seed", "--samples", "--burn-in", "--keep", "-j",
-                                                  "--result", "--l2", "--max-ground-clauses"};
+                                                  "--result", "--l2", "--max-ground-clauses", "--expectations"};
     if (std::find(kValued.begin(), kValued.end(), a) != kValued.end()) {
       if (i + 1 >= args.size()) {
         std::cerr << "ksmc: " << a << " needs a value\n";
@@ -368,6 +373,7 @@ int run(int argc, char** argv) {
         else if (a == "--result") inv.infer.result_path = v;
         else if (a == "--max-ground-clauses") inv.infer.max_ground_clauses = infer::parse_count(v);
         else if (a == "--l2") inv.learn.prior_sigma = std::stod(v);
+        else if (a == "--expectations") inv.learn.expectations = v;
         else if (a == "--keep") inv.keep_dir = v;
         else if (a == "-j") {
           std::size_t used = 0;

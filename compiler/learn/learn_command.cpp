@@ -146,6 +146,18 @@ int run_learn(const lower::MlnIr& ir, const std::string& ksm_path, const std::ve
            "auxiliary atom fixed while it varies one atom)\n";
     return 2;
   }
+  if (request.expectations != "auto" && request.expectations != "exact" && request.expectations != "sampled") {
+    err << "ksmc learn: unknown --expectations '" << request.expectations << "' (auto, exact or sampled)\n";
+    return 2;
+  }
+  if ((request.expectations != "auto" || request.samples >= 0) && request.method != "cll") {
+    err << "ksmc learn: --expectations and --samples need --method cll (the pseudo-likelihood needs no inference)\n";
+    return 2;
+  }
+  if (request.samples == 0) {
+    err << "ksmc learn: --samples must be at least 1\n";
+    return 2;
+  }
   if (!(request.prior_sigma > 0.0)) {
     err << "ksmc learn: --l2 must be a positive standard deviation\n";
     return 2;
@@ -234,12 +246,26 @@ int run_learn(const lower::MlnIr& ir, const std::string& ksm_path, const std::ve
   mln::LearnOptions options;
   options.objective = request.method == "cll" ? mln::Objective::ConditionalLikelihood : mln::Objective::PseudoLikelihood;
   options.prior_sigma = request.prior_sigma;
+  options.expectations = request.expectations == "exact"     ? mln::Expectations::Exact
+                         : request.expectations == "sampled" ? mln::Expectations::Sampled
+                                                             : mln::Expectations::Auto;
+  if (request.samples > 0) options.samples = request.samples;
+  options.seed = request.seed;
   mln::LearnResult result;
   try {
     result = mln::learn_weights(sets, tying, initial, options);
   } catch (const mln::MlnError& e) {
     err << "ksmc learn: error: " << e.what() << "\n";
     return 1;
+  }
+  if (options.objective == mln::Objective::ConditionalLikelihood) {
+    err << "ksmc learn: cll: " << result.gradient;
+    if (result.too_large_set >= 0)
+      err << ": the network of " << data[static_cast<std::size_t>(result.too_large_set)] << " has "
+          << result.too_large_reason;
+    else if (result.sampled)
+      err << ": forced by --expectations sampled";
+    err << "\n";
   }
   bool ok = false;
   const std::string source = read_file(ksm_path, ok);
@@ -262,7 +288,8 @@ int run_learn(const lower::MlnIr& ir, const std::string& ksm_path, const std::ve
   }
   err << "ksmc learn: " << request.method << ", " << worlds << " training world" << (worlds == 1 ? "" : "s") << ", "
       << tying.num_params << " weight" << (tying.num_params == 1 ? "" : "s") << ", "
-      << (result.converged ? "converged" : "NOT converged") << " after " << result.iterations << " iterations\n";
+      << (result.sampled ? "stochastic, fixed" : result.converged ? "converged after" : "NOT converged after") << " "
+      << result.iterations << " iterations\n";
   const std::string text = replace_weights(source, ir.rules, replacement);
   if (request.out_path.empty()) {
     out << text;

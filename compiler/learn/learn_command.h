@@ -5,10 +5,13 @@
 // stay (a `prob p:` rule gets the probability of its learned log-odds).
 // Generative pseudo-log-likelihood by default; `--method cll` maximises the conditional
 // likelihood with its exact gradient (observed minus expected clause counts under exact
-// inference; runtime/mln/weight_learning.h). `--per-formula` (cll only) learns one weight
+// inference; runtime/mln/weight_learning.h) where exact inference applies to every training
+// network, and from MC-SAT expectations otherwise (`--expectations sampled` forces them,
+// `--expectations exact` refuses the fallback); stderr says which path ran. `--per-formula` (cll only) learns one weight
 // per formula under per-formula semantics (compiler/lower/per_formula.h).
 #pragma once
 
+#include <cstdint>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -22,6 +25,9 @@ struct LearnRequest {
   double prior_sigma = 10.0;       // --l2 SIGMA: standard deviation of the Gaussian prior
   std::string out_path;            // --out FILE (stdout when empty)
   bool per_formula = false;        // --per-formula: `ir` was rewritten by use_per_formula_weights (cll only)
+  std::string expectations = "auto";  // --expectations auto|exact|sampled (cll only)
+  std::int64_t samples = -1;       // --samples N: MC-SAT samples per sampled gradient (< 0: the default)
+  std::uint64_t seed = 1;          // --seed N: MC-SAT seed of the sampled path
 };
 
 // Returns 0, 1 on bad data (every bad .db line reported) or unlearnable input, 2 on usage.
