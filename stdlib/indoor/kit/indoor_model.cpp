@@ -17,7 +17,7 @@ namespace mcmc = runtime::mcmc;
 
 // Delayed acceptance: the first stage passes every proposal whose cheap log ratio is above
 // -kScreenMargin (nats), so only clearly worse proposals are screened out.
-constexpr double kScreenMargin = 20.0;
+constexpr double kScreenMargin = 200.0;
 
 // The run-time state of one source pool: its candidates (refreshed every source_refresh
 // proposals), caches and the KernelSet its kernels propose with.
