@@ -1,5 +1,5 @@
 // End-to-end indoor sampler throughput through the kit (IndoorModel + kernels + schedule of
-// domains/indoor.ksm, semantic refreshes included) on lab_b.png, single thread:
+// domains/indoor.ksm, the knowledge evaluated with every proposal) on lab_b.png, single thread:
 //   bench_indoor_run [iterations] [--long N] [--window W] [--flag NAME=VALUE ...]
 // 1. Iterations per second: median of 5 runs of `iterations` (default 10000), seeds 1-5.
 // 2. Plateau: 5 runs (seeds 1-5) of at most N iterations (default 200000). The best log
@@ -7,7 +7,7 @@
 //    every 100 iterations: the run is on a plateau from iteration i when
 //    best(i + W) - best(i) <= min_gain, W = 5000 by default, with min_gain = 0 (strict) and
 //    min_gain = one_cell_gain() (the smallest gain of correcting one cell over the run's tables:
-//    ln 8 for Table 3.1, ln 2 with the lenient table of domains/indoor.ksm).
+//    ln 8 for Table 3.1; the weakest table of the domain decides).
 //    A run stops once both are reached (engine cancel flag). Per run: the plateau iteration i,
 //    the wall seconds at i and when it became known (i + W); medians over the 5 runs.
 #include <algorithm>
