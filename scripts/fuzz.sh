@@ -67,7 +67,7 @@ for t in "${TARGETS[@]}"; do
   set +e
   ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=1" UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
   "$BUILD_DIR/$t" "$CORPUS" "$SEEDS" \
-    -max_total_time="$SECONDS_TO_RUN" -max_len="$(max_len "$t")" -len_control=20 -timeout=10 \
+    -max_total_time="$SECONDS_TO_RUN" -max_len="$(max_len "$t")" -len_control=0 -timeout=10 \
     -rss_limit_mb=2048 -malloc_limit_mb=2048 -seed=1 -print_final_stats=1 -artifact_prefix="$ARTIFACTS" \
     > "$LOG" 2>&1
   rc=$?

@@ -39,8 +39,9 @@ std::unique_ptr<ParsedFile> parse_text(int file, const std::string& text, diag::
 
 // Drops ANTLR's process-wide prediction caches (lexer and parser DFA, shared prediction
 // contexts). They only grow: every input that takes a new prediction path adds states, so
-// a process parsing many distinct inputs (the fuzzers, a long-lived server) grows without
-// bound. Parsing stays correct afterwards; the caches refill. Not while another thread parses.
+// a long-lived process parsing many distinct sources may call it now and then. (Under
+// fuzzing the growth is ASan's, not this: docs/reliability.md.) Parsing stays correct
+// afterwards; the caches refill. Not while another thread parses.
 void clear_prediction_caches();
 
 }  // namespace ksmc::compiler::parse
