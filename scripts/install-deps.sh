@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages ksmc needs (non-interactive). Uses sudo when not root.
-# chromium: the report.html browser test; ros-core ... librosbag-dev: the ROS nodes (ros/).
+# bc, procps: the bad-input and signal tests (timings, pgrep); chromium: the report.html
+# browser test; ros-core ... librosbag-dev: the ROS nodes (ros/).
 set -euo pipefail
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
@@ -10,6 +11,7 @@ PACKAGES=(
   libeigen3-dev libopencv-dev libpcl-dev libopenmpi-dev
   libfmt-dev catch2 nlohmann-json3-dev libcli11-dev libyaml-cpp-dev libtbb-dev
   libbullet-dev graphviz
+  bc procps
   clang libclang-rt-14-dev
   chromium
   ros-core libroscpp-dev libnav-msgs-dev libvisualization-msgs-dev libstd-msgs-dev libsensor-msgs-dev librosbag-dev
