@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages ksmc needs (non-interactive). Uses sudo when not root.
-# bc, procps: the bad-input and signal tests (timings, pgrep); chromium: the report.html
+# bc, procps, strace: the bad-input and signal tests (timings, pgrep, fault injection);
+# chromium: the report.html
 # browser test; ros-core ... librosbag-dev: the ROS nodes (ros/).
 set -euo pipefail
 SUDO=""
@@ -11,7 +12,7 @@ PACKAGES=(
   libeigen3-dev libopencv-dev libpcl-dev libopenmpi-dev
   libfmt-dev catch2 nlohmann-json3-dev libcli11-dev libyaml-cpp-dev libtbb-dev
   libbullet-dev graphviz
-  bc procps
+  bc procps strace
   clang libclang-rt-14-dev
   chromium
   ros-core libroscpp-dev libnav-msgs-dev libvisualization-msgs-dev libstd-msgs-dev libsensor-msgs-dev librosbag-dev

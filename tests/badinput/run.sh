@@ -12,6 +12,7 @@ WORK="$(mktemp -d "${TMPDIR:-/tmp}/ksmc-badinput-XXXXXX")"
 trap 'rm -rf "$WORK"' EXIT
 cd "$WORK"
 . "$SRC/tests/badinput/cases.sh" || exit 1
+. "$SRC/tests/badinput/cases_fault.sh" || exit 1
 
 cases=0
 failed=0
@@ -63,5 +64,6 @@ skip() {
 }
 
 run_cases "$BIN" "$SRC"
+run_fault_cases "$BIN"
 echo "badinput: $cases cases, $failed failed, $skipped skipped"
 [ $failed -eq 0 ] && [ $cases -gt 0 ]
