@@ -1,8 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages ksmc needs (non-interactive). Uses sudo when not root.
 # bc, procps, strace: the bad-input and signal tests (timings, pgrep, fault injection);
-# chromium: the report.html
-# browser test; ros-core ... librosbag-dev: the ROS nodes (ros/).
+# chromium: the report.html browser test; ros-core ... librosbag-dev: the ROS nodes (ros/).
 set -euo pipefail
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
