@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ksmc::stdlib::indoor::kernels {
 
@@ -61,6 +62,32 @@ std::optional<std::pair<std::size_t, std::size_t>> draw_pair(const World& w, Rng
 bool unit_free(const Context& c, const World& w, UnitId id, const OrientedRect& r) {
   const Unit* u = w.find_unit(id);
   return u && same_rect(u->rect, r, c.p.coincide) && w.door_count(id) == 0;
+}
+
+bool unit_matches(const Context& c, const World& w, UnitId id, const OrientedRect& r) {
+  const Unit* u = w.find_unit(id);
+  return u && same_rect(u->rect, r, c.p.coincide);
+}
+
+double door_wall_distance(const Context& c, const OrientedRect& r, Point2 a, Point2 b) {
+  const Point2 mid{0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
+  const double ang = std::atan2(b.y - a.y, b.x - a.x);
+  const auto cs = r.corners();
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t j = 0; j < 4; ++j) {
+    const Point2 p = cs[j], q = cs[(j + 1) % 4];
+    const double wl = distance(p, q);
+    if (!(wl > 0.0)) continue;
+    double dang = std::fmod(std::abs(std::atan2(q.y - p.y, q.x - p.x) - ang), kPi);
+    dang = std::min(dang, kPi - dang);
+    if (dang > c.p.door_angle) continue;
+    const double tx = (q.x - p.x) / wl, ty = (q.y - p.y) / wl;
+    const double along = (mid.x - p.x) * tx + (mid.y - p.y) * ty;
+    const double across = std::abs(-(mid.x - p.x) * ty + (mid.y - p.y) * tx);
+    if (along < 0.0 || along > wl || across > c.p.door_snap) continue;
+    best = std::min(best, across);
+  }
+  return best;
 }
 
 Shape shape_of(const Move& m) {

@@ -54,6 +54,12 @@ std::optional<std::pair<std::size_t, std::size_t>> draw_pair(const World& w, Rng
 std::optional<std::size_t> unit_index(const World& w, UnitId id);
 // True when the unit exists, its rect matches `r` and it carries no door.
 bool unit_free(const Context& c, const World& w, UnitId id, const OrientedRect& r);
+// True when the unit exists and its rect matches `r` (doors allowed).
+bool unit_matches(const Context& c, const World& w, UnitId id, const OrientedRect& r);
+// Distance (cells) from the midpoint of segment a-b to the nearest wall of `r` parallel to it
+// (within door_angle) whose extent contains the midpoint; +inf when there is none. A door
+// lies on a unit's wall when this is at most door_snap (the rule ALLOCATE attaches by).
+double door_wall_distance(const Context& c, const OrientedRect& r, Point2 a, Point2 b);
 
 // Move shape checks: unit changes of the form (removed, added, modified) counts.
 struct Shape {

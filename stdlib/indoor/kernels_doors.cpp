@@ -12,31 +12,14 @@ namespace ksmc::stdlib::indoor::kernels {
 namespace {
 
 std::optional<std::pair<UnitId, UnitId>> attach(const Context& c, const World& w, Point2 a, Point2 b) {
-  const double len = distance(a, b);
-  if (!(len > 0.0)) return std::nullopt;
-  const Point2 mid{0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
-  const double ang = std::atan2(b.y - a.y, b.x - a.x);
+  if (!(distance(a, b) > 0.0)) return std::nullopt;
   struct Hit {
     double d;
     UnitId id;
   };
   std::vector<Hit> hits;
   for (const Unit& u : w.units()) {
-    const auto cs = u.rect.corners();
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t j = 0; j < 4; ++j) {
-      const Point2 p = cs[j], q = cs[(j + 1) % 4];
-      const double wl = distance(p, q);
-      if (!(wl > 0.0)) continue;
-      double dang = std::fmod(std::abs(std::atan2(q.y - p.y, q.x - p.x) - ang), kPi);
-      dang = std::min(dang, kPi - dang);
-      if (dang > c.p.door_angle) continue;
-      const double tx = (q.x - p.x) / wl, ty = (q.y - p.y) / wl;
-      const double along = (mid.x - p.x) * tx + (mid.y - p.y) * ty;
-      const double across = std::abs(-(mid.x - p.x) * ty + (mid.y - p.y) * tx);
-      if (along < 0.0 || along > wl || across > c.p.door_snap) continue;
-      best = std::min(best, across);
-    }
+    const double best = door_wall_distance(c, u.rect, a, b);
     if (std::isfinite(best)) hits.push_back({best, u.id});
   }
   if (hits.size() < 2) return std::nullopt;

@@ -3,8 +3,15 @@
 // walls; the cut is taken perpendicular to those walls through the mean of the two crossings.
 // MERGE: first unit uniform, second by a_r(s) = 1/d (eq. 3.19-3.20); the two must tile a
 // rectangle exactly (same frame, a full common wall), which is the only case SPLIT can undo.
+// Doors: both moves carry the doors of the units they remove to the units they add (each door
+// to the one added unit with a wall under it). Before, a unit with a door could not be split
+// or merged, so a unit spanning several offices froze from the first door ALLOCATE gave it
+// (from iteration 4000 on: lab_c_scan kept one hall over six offices).
 #include <algorithm>
 #include <cmath>
+#include <array>
+#include <initializer_list>
+#include <span>
 
 #include "stdlib/indoor/kernel_common.h"
 
@@ -86,6 +93,65 @@ std::optional<OrientedRect> merged(const Context& c, const OrientedRect& r, cons
   return rect_from_box(u, f);
 }
 
+// The one unit of `among` with a wall under door d (door_wall_distance), or nullopt.
+std::optional<UnitId> owner_of(const Context& c, const Door& d, std::span<const Unit> among) {
+  std::optional<UnitId> owner;
+  for (const Unit& u : among) {
+    if (!std::isfinite(door_wall_distance(c, u.rect, d.a, d.b))) continue;
+    if (owner) return std::nullopt;
+    owner = u.id;
+  }
+  return owner;
+}
+
+// The doors of the units `from` (removed by the move) re-attached to the units `to` (added by
+// it): each to its one owner in `to`. nullopt (the move is not made) when a door joins two
+// units of `from`, has no single owner in `to`, or has not its own unit as single owner in
+// `from`. The last condition is the first one of the reverse move, so a move carries its doors
+// exactly when its reverse carries them back: the door changes are a function of the unit
+// changes, and the proposal densities stay those of the units.
+std::optional<std::vector<DoorChange>> carry_doors(const Context& c, const World& w, std::span<const Unit> from,
+                                                   std::span<const Unit> to) {
+  auto in_from = [&](UnitId id) {
+    return std::any_of(from.begin(), from.end(), [id](const Unit& u) { return u.id == id; });
+  };
+  std::vector<DoorChange> out;
+  for (const Door& d : w.doors()) {
+    const bool fa = in_from(d.unit_a), fb = in_from(d.unit_b);
+    if (!fa && !fb) continue;
+    if (fa && fb) return std::nullopt;
+    const UnitId mine = fa ? d.unit_a : d.unit_b, other = fa ? d.unit_b : d.unit_a;
+    const auto back = owner_of(c, d, from);
+    const auto owner = owner_of(c, d, to);
+    if (!back || *back != mine || !owner) return std::nullopt;
+    Door moved = d;
+    moved.unit_a = std::min(*owner, other);
+    moved.unit_b = std::max(*owner, other);
+    out.push_back({d.id, d, moved});
+  }
+  return out;
+}
+
+// The move's door changes are exactly `carry_doors` of its unit changes.
+bool carries_doors(const Context& c, const World& w, const Move& m, std::initializer_list<const UnitChange*> removed,
+                   std::initializer_list<const UnitChange*> added) {
+  std::vector<Unit> from, to;
+  for (const UnitChange* ch : removed) from.push_back(*w.find_unit(ch->id));
+  for (const UnitChange* ch : added) to.push_back(*ch->after);
+  const auto want = carry_doors(c, w, from, to);
+  if (!want || want->size() != m.doors.size()) return false;
+  for (std::size_t i = 0; i < want->size(); ++i) {
+    const DoorChange& x = (*want)[i];
+    const DoorChange& y = m.doors[i];
+    if (x.id != y.id || !y.before || !y.after || y.before->unit_a != x.before->unit_a ||
+        y.before->unit_b != x.before->unit_b || y.after->unit_a != x.after->unit_a ||
+        y.after->unit_b != x.after->unit_b || distance(y.after->a, x.after->a) > c.p.coincide ||
+        distance(y.after->b, x.after->b) > c.p.coincide)
+      return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 std::optional<Forward> propose_split(const Context& c, const World& w, Rng& rng) {
@@ -93,7 +159,6 @@ std::optional<Forward> propose_split(const Context& c, const World& w, Rng& rng)
   if (units.empty() || !c.src.split_lines) return std::nullopt;
   const auto i = std::uniform_int_distribution<std::size_t>(0, units.size() - 1)(rng);
   const Unit& u = units[i];
-  if (w.door_count(u.id) > 0) return std::nullopt;
   const auto lines = c.src.split_lines(w, u);
   const auto lw = line_weights(c, lines);
   const auto e = draw_weighted(lw, rng);
@@ -104,20 +169,23 @@ std::optional<Forward> propose_split(const Context& c, const World& w, Rng& rng)
   const UnitId id = w.next_unit_id();
   const Unit a = c.ev.make_unit(id, rect_from_box(cut->first, f), u.lut_class);
   const Unit b = c.ev.make_unit(id + 1, rect_from_box(cut->second, f), u.lut_class);
+  const std::array<Unit, 2> halves{a, b};
+  auto doors = carry_doors(c, w, std::span<const Unit>(&u, 1), halves);
+  if (!doors) return std::nullopt;
   Forward fw;
   fw.move.kind = KernelKind::Split;
   fw.move.units = {{u.id, u, std::nullopt}, {a.id, std::nullopt, a}, {b.id, std::nullopt, b}};
+  fw.move.doors = std::move(*doors);
   fw.log_q = -std::log(static_cast<double>(units.size())) + log_cut_mass(c, u.rect, lines, lw, a.rect, b.rect);
   return fw;
 }
 
 double log_q_split(const Context& c, const World& w, const Move& m) {
   const Shape s = shape_of(m);
-  if (!c.src.split_lines || s.removed.size() != 1 || s.added.size() != 2 || !s.modified.empty() ||
-      !m.doors.empty())
-    return kNegInf;
+  if (!c.src.split_lines || s.removed.size() != 1 || s.added.size() != 2 || !s.modified.empty()) return kNegInf;
   const UnitChange& ch = *s.removed[0];
-  if (!unit_free(c, w, ch.id, ch.before->rect)) return kNegInf;
+  if (!unit_matches(c, w, ch.id, ch.before->rect) || !carries_doors(c, w, m, {&ch}, {s.added[0], s.added[1]}))
+    return kNegInf;
   const Unit& u = *w.find_unit(ch.id);
   const auto lines = c.src.split_lines(w, u);
   return -std::log(static_cast<double>(w.units().size())) +
@@ -130,28 +198,31 @@ std::optional<Forward> propose_merge(const Context& c, const World& w, Rng& rng)
   if (!pair) return std::nullopt;
   const Unit& r = w.units()[pair->first];
   const Unit& s = w.units()[pair->second];
-  if (w.door_count(r.id) > 0 || w.door_count(s.id) > 0) return std::nullopt;
   const auto rect = merged(c, r.rect, s.rect);
   if (!rect) return std::nullopt;
   // The merged unit keeps the larger unit's likelihood class.
   const std::uint8_t cls = r.rect.area() >= s.rect.area() ? r.lut_class : s.lut_class;
   const Unit u = c.ev.make_unit(w.next_unit_id(), *rect, cls);
+  const std::array<Unit, 2> parts{r, s};
+  auto doors = carry_doors(c, w, parts, std::span<const Unit>(&u, 1));
+  if (!doors) return std::nullopt;
   Forward fw;
   fw.move.kind = KernelKind::Merge;
   fw.move.units = {{r.id, r, std::nullopt}, {s.id, s, std::nullopt}, {u.id, std::nullopt, u}};
+  fw.move.doors = std::move(*doors);
   fw.log_q = log_pair_probability(w, r.id, s.id);
   return fw;
 }
 
 double log_q_merge(const Context& c, const World& w, const Move& m) {
   const Shape s = shape_of(m);
-  if (s.removed.size() != 2 || s.added.size() != 1 || !s.modified.empty() || !m.doors.empty())
-    return kNegInf;
+  if (s.removed.size() != 2 || s.added.size() != 1 || !s.modified.empty()) return kNegInf;
   const UnitChange& a = *s.removed[0];
   const UnitChange& b = *s.removed[1];
-  if (!unit_free(c, w, a.id, a.before->rect) || !unit_free(c, w, b.id, b.before->rect)) return kNegInf;
+  if (!unit_matches(c, w, a.id, a.before->rect) || !unit_matches(c, w, b.id, b.before->rect)) return kNegInf;
   const auto rect = merged(c, w.find_unit(a.id)->rect, w.find_unit(b.id)->rect);
   if (!rect || !same_rect(*rect, s.added[0]->after->rect, c.p.coincide)) return kNegInf;
+  if (!carries_doors(c, w, m, {&a, &b}, {s.added[0]})) return kNegInf;
   return log_pair_probability(w, a.id, b.id);
 }
 

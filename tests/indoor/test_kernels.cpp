@@ -157,6 +157,43 @@ TEST_CASE("SPLIT / MERGE round trip", "[indoor][kernels]") {
   CHECK(merges > 0);
 }
 
+TEST_CASE("SPLIT / MERGE carry the doors of the units they replace", "[indoor][kernels]") {
+  KernelFixture fx;
+  KernelSet ks(fx.evidence, fx.sources(), params());
+  // A+B (unit 1) over the corridor D (unit 2), joined by the A-D door.
+  World w = world_of({fx.unit(1, {10, 10, 80, 40}), fx.unit(2, fx.rooms[3])});
+  Move door;
+  door.doors.push_back({1, std::nullopt, fx.evidence.make_door(1, 1, 2, {27, 40}, {33, 40})});
+  w.apply(door);
+  // SPLIT near x = 50: the door goes to the A half, the only one with a wall under it.
+  auto at_a = [](const Proposal& p) {
+    if (p.move.units[0].id != 1 || p.move.units[1].after->rect.cx > 45.0) return false;
+    return p.move.doors.size() == 1 && p.move.doors[0].after->unit_a == 2 &&
+           p.move.doors[0].after->unit_b == p.move.units[1].id;
+  };
+  check_round_trip(ks, KernelKind::Split, w, [](const Proposal& p) { return p.move.units[0].id == 1; });
+  const auto p = find(ks, KernelKind::Split, w, at_a);
+  REQUIRE(p);
+  CHECK(ks.log_q(KernelKind::Split, w, p->move) == Approx(p->log_q_fwd).epsilon(1e-12));
+  // The same unit change with the door left on the wrong half is not a SPLIT move.
+  Move wrong = p->move;
+  wrong.doors[0].after->unit_b = p->move.units[2].id;
+  CHECK(ks.log_q(KernelKind::Split, w, wrong) == -std::numeric_limits<double>::infinity());
+  // MERGE of the two halves (one with the door) is SPLIT's reverse, door included.
+  const World halves = w.applied(p->move);
+  check_round_trip(ks, KernelKind::Merge, halves, [](const Proposal& q) { return q.move.units[0].id != 2; });
+  // A door between the two units of a MERGE cannot be carried (no SPLIT makes one): declined.
+  World ab = world_of({fx.unit(1, fx.rooms[0]), fx.unit(2, fx.rooms[1]), fx.unit(3, fx.rooms[3])});
+  Move ab_door;
+  ab_door.doors.push_back({1, std::nullopt, fx.evidence.make_door(1, 1, 2, {50, 22}, {50, 28})});
+  ab.apply(ab_door);
+  Rng rng(5);
+  for (int i = 0; i < 300; ++i) {
+    auto q = ks.propose(KernelKind::Merge, ab, rng);
+    if (q) CHECK(q->move.units[0].id + q->move.units[1].id != 3);
+  }
+}
+
 TEST_CASE("SHRINK / DILATE inverse moves are scored consistently", "[indoor][kernels]") {
   KernelFixture fx;
   KernelSet ks(fx.evidence, fx.sources(), params());

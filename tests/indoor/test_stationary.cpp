@@ -1,7 +1,8 @@
 // End-to-end check of the proposal probabilities: on a tiny discrete world space (subsets of
 // three unit candidates, a split line joining them and a door candidate), the MH chain over
 // ADD/REMOVE/SPLIT/MERGE/ALLOCATE/DELETE must visit each world with its exact posterior
-// probability. Wrong log Q values (or schedule factors) bias these frequencies.
+// probability. Wrong log Q values (or schedule factors) bias these frequencies. A second world
+// adds doors that SPLIT and MERGE carry from the units they remove to the units they add.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -39,77 +40,188 @@ std::string label(const World& w) {
   return s;
 }
 
-}  // namespace
-
-TEST_CASE("MH over the discrete kernels samples the exact posterior", "[indoor][kernels][stationary]") {
-  const ClassGrid map = draw_plan(16, 24, {{2, 2, 12, 14}, {12, 2, 22, 14}}, 1, {{12, 8}}, 2);
-  const MapEvidence ev(map, 0);
-  const std::vector<CandidateUnit> units{{kBig, 1.0}, {kLeft, 2.0}, {kRight, 0.5}};
-  const std::vector<CandidateLine> lines{{{12, 0}, {12, 16}, 3.0}};
-  const std::vector<CandidateDoor> doors{{{12, 6}, {12, 10}, 0.9}};
-  KernelSources src;
-  src.units = [&](const World&) { return std::span<const CandidateUnit>(units); };
-  src.split_lines = [&](const World&, const Unit& u) {
-    return same_rect(u.rect, kBig) ? lines : std::vector<CandidateLine>{};
-  };
-  src.doors = [&](const World&) { return std::span<const CandidateDoor>(doors); };
-  KernelParams kp;
-  kp.min_size = 2.0;
-  const KernelSet ks(ev, src, kp);
-
-  // A nearly flat likelihood so that every state has visible mass.
+// A nearly flat likelihood so that every state has visible mass.
+ScoreParams flat_score() {
   ScoreParams sp;
   for (auto& row : sp.tables[0].p) row = {0.333, 0.333, 0.333};
   sp.tables[0].p[0][0] = sp.tables[0].p[1][1] = sp.tables[0].p[2][2] = 0.3355;
   sp.prior.psi2 = 0.9;
+  return sp;
+}
 
-  // Exact posterior of the ten states, built with explicit moves.
-  std::map<std::string, double> exact;
-  {
-    double z = 0.0;
-    for (int mask = 0; mask < 8; ++mask)
-      for (int door = 0; door < 2; ++door) {
-        if (door && (mask & 6) != 6) continue;
-        ScoredWorld s(map, sp);
-        Move m;
-        UnitId id = 1;
-        UnitId left = 0, right = 0;
-        for (int k = 0; k < 3; ++k) {
-          if (!(mask & (1 << k))) continue;
-          const OrientedRect r = k == 0 ? kBig : k == 1 ? kLeft : kRight;
-          if (k == 1) left = id;
-          if (k == 2) right = id;
-          m.units.push_back({id, std::nullopt, ev.make_unit(id, r)});
-          ++id;
-        }
-        if (door) m.doors.push_back({1, std::nullopt, ev.make_door(1, left, right, {12, 6}, {12, 10})});
-        s.apply(m);
-        const double p = std::exp(s.log_posterior());
-        exact[label(s.world())] = p;
-        z += p;
-      }
-    for (auto& [k, v] : exact) v /= z;
+// The toy chain: the three unit candidates, the split line of the big unit, `doors`, on `map`.
+struct Toy {
+  std::vector<CandidateUnit> units{{kBig, 1.0}, {kLeft, 2.0}, {kRight, 0.5}};
+  std::vector<CandidateLine> lines{{{12, 0}, {12, 16}, 3.0}};
+  std::vector<CandidateDoor> doors;
+  ClassGrid map;
+  MapEvidence ev;
+  KernelSet ks;
+  ScoreParams sp = flat_score();
+
+  Toy(const ClassGrid& m, std::vector<CandidateDoor> d)
+      : doors(std::move(d)), map(m), ev(map, 0), ks(ev, sources(), kernel_params()) {}
+
+  KernelSources sources() const {
+    KernelSources src;
+    src.units = [this](const World&) { return std::span<const CandidateUnit>(units); };
+    src.split_lines = [this](const World&, const Unit& u) {
+      return same_rect(u.rect, kBig) ? lines : std::vector<CandidateLine>{};
+    };
+    src.doors = [this](const World&) { return std::span<const CandidateDoor>(doors); };
+    return src;
   }
-  REQUIRE(exact.size() == 10);
+  static KernelParams kernel_params() {
+    KernelParams kp;
+    kp.min_size = 2.0;
+    return kp;
+  }
+  // Adds to m the units of big / left / right whose bit (1, 2, 4) is in mask, ids from `id`;
+  // ids[k] is the id given to unit k (0 when absent).
+  void add_units(Move& m, int mask, UnitId id, UnitId ids[3]) const {
+    for (int k = 0; k < 3; ++k) {
+      ids[k] = 0;
+      if (!(mask & (1 << k))) continue;
+      ids[k] = id;
+      m.units.push_back({id, std::nullopt, ev.make_unit(id, k == 0 ? kBig : k == 1 ? kLeft : kRight)});
+      ++id;
+    }
+  }
+  // The unnormalised posterior of the world m builds, stored under its label.
+  void score(const Move& m, std::string (*label_of)(const World&), std::map<std::string, double>& exact) const {
+    ScoredWorld s(map, sp);
+    s.apply(m);
+    exact[label_of(s.world())] = std::exp(s.log_posterior());
+  }
+};
 
+void normalise(std::map<std::string, double>& exact) {
+  double z = 0.0;
+  for (const auto& [k, v] : exact) z += v;
+  for (auto& [k, v] : exact) v /= z;
+}
+
+struct Visits {
+  std::map<std::string, long long> count;
+  SamplerStats stats;
+};
+
+// Runs MH over ADD/REMOVE/SPLIT/MERGE/ALLOCATE/DELETE from sw's world and checks the visit
+// frequencies of the labelled states against `exact`.
+Visits check_visits(ScoredWorld& sw, const KernelSet& ks, std::uint64_t seed, const std::map<std::string, double>& exact,
+                    std::string (*label_of)(const World&)) {
   ScheduleStage st;
   st.until = std::numeric_limits<long long>::max();
   st.phi = {0.2, 0.2, 0.15, 0.15, 0.0, 0.0, 0.15, 0.15, 0.0};
-  ScoredWorld sw(map, sp);
-  DevSampler mh(sw, ks, {st}, 99);
-  std::map<std::string, long long> visits;
+  DevSampler mh(sw, ks, {st}, seed);
+  Visits v;
   const long long n = 400000;
   mh.run(1000);
   for (long long i = 0; i < n; ++i) {
     mh.step();
-    ++visits[label(sw.world())];
+    ++v.count[label_of(sw.world())];
   }
   for (const auto& [k, p] : exact) {
-    const double f = static_cast<double>(visits[k]) / static_cast<double>(n);
+    const double f = static_cast<double>(v.count[k]) / static_cast<double>(n);
     INFO("state " << k << ": exact " << p << ", sampled " << f);
     CHECK(f == Approx(p).margin(0.015));
   }
-  CHECK(static_cast<double>(visits["other"]) / static_cast<double>(n) < 0.01);
+  CHECK(static_cast<double>(v.count["other"]) / static_cast<double>(n) < 0.01);
+  v.stats = mh.stats();
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("MH over the discrete kernels samples the exact posterior", "[indoor][kernels][stationary]") {
+  const Toy toy(draw_plan(16, 24, {{2, 2, 12, 14}, {12, 2, 22, 14}}, 1, {{12, 8}}, 2), {{{12, 6}, {12, 10}, 0.9}});
+  // Exact posterior of the ten states, built with explicit moves.
+  std::map<std::string, double> exact;
+  for (int mask = 0; mask < 8; ++mask)
+    for (int door = 0; door < 2; ++door) {
+      if (door && (mask & 6) != 6) continue;
+      Move m;
+      UnitId ids[3];
+      toy.add_units(m, mask, 1, ids);
+      if (door) m.doors.push_back({1, std::nullopt, toy.ev.make_door(1, ids[1], ids[2], {12, 6}, {12, 10})});
+      toy.score(m, label, exact);
+    }
+  normalise(exact);
+  REQUIRE(exact.size() == 10);
+
+  ScoredWorld sw(toy.map, toy.sp);
+  const Visits v = check_visits(sw, toy.ks, 99, exact, label);
   // Every kernel of the schedule was accepted at least once.
-  for (int k : {0, 1, 2, 3, 6, 7}) CHECK(mh.stats().accepted[static_cast<std::size_t>(k)] > 0);
+  for (int k : {0, 1, 2, 3, 6, 7}) CHECK(v.stats.accepted[static_cast<std::size_t>(k)] > 0);
+}
+
+namespace {
+
+const OrientedRect kBottom{12, 17, 20, 6, 0.0};  // [2,22] x [14,20], always present
+
+// Like label(), plus which unit the door under the left half of y = 14 joins to the bottom unit
+// ("L" through the left unit, "B" through the big one) and whether the L-R door is there.
+std::string carry_label(const World& w) {
+  const Unit* bottom = nullptr;
+  std::vector<Unit> rest;
+  for (const Unit& u : w.units()) {
+    if (same_rect(u.rect, kBottom) && !bottom) bottom = &u;
+    else rest.push_back(u);
+  }
+  if (!bottom) return "other";
+  World others;
+  Move m;
+  for (const Unit& u : rest) m.units.push_back({u.id, std::nullopt, u});
+  others.apply(m);
+  std::string s = label(others);
+  if (s == "other") return s;
+  std::string lr, bd;
+  for (const Door& d : w.doors()) {
+    if (d.a.y != 14.0) {
+      lr = "+lr";
+      continue;
+    }
+    const UnitId upper = d.unit_a == bottom->id ? d.unit_b : d.unit_a;
+    bd = same_rect(w.find_unit(upper)->rect, kBig) ? "+dB" : "+dL";
+  }
+  return s + lr + bd;
+}
+
+}  // namespace
+
+// The same check with doors that SPLIT and MERGE must carry: a fixed bottom unit below big /
+// left / right and a door candidate on the wall between the bottom unit and the left half. A
+// SPLIT of the big unit moves that door to the left half, a MERGE of left and right moves it
+// to the big unit; the exact posterior is over every world those doors can be in.
+TEST_CASE("MH with doors carried by SPLIT / MERGE samples the exact posterior", "[indoor][kernels][stationary]") {
+  const Toy toy(draw_plan(22, 24, {{2, 2, 12, 14}, {12, 2, 22, 14}, {2, 14, 22, 20}}, 1, {{12, 8}, {7, 14}}, 2),
+                {{{12, 6}, {12, 10}, 0.9}, {{5, 14}, {9, 14}, 0.7}});
+  // Every world: a subset of big / left / right, the L-R door when both halves are there, the
+  // bottom door absent or joined to the big or the left unit when that unit is there.
+  std::map<std::string, double> exact;
+  for (int mask = 0; mask < 8; ++mask)
+    for (int lr = 0; lr < 2; ++lr)
+      for (int bd = 0; bd < 3; ++bd) {  // 0 none, 1 through big, 2 through left
+        if ((lr && (mask & 6) != 6) || (bd == 1 && !(mask & 1)) || (bd == 2 && !(mask & 2))) continue;
+        Move m;
+        m.units.push_back({1, std::nullopt, toy.ev.make_unit(1, kBottom)});
+        UnitId ids[3];
+        toy.add_units(m, mask, 2, ids);
+        if (lr) m.doors.push_back({1, std::nullopt, toy.ev.make_door(1, ids[1], ids[2], {12, 6}, {12, 10})});
+        if (bd) m.doors.push_back({2, std::nullopt, toy.ev.make_door(2, 1, ids[bd == 1 ? 0 : 1], {5, 14}, {9, 14})});
+        toy.score(m, carry_label, exact);
+      }
+  normalise(exact);
+  REQUIRE(exact.size() == 21);
+
+  ScoredWorld sw(toy.map, toy.sp);
+  Move start;
+  start.units.push_back({1, std::nullopt, toy.ev.make_unit(1, kBottom)});
+  sw.apply(start);
+  const Visits v = check_visits(sw, toy.ks, 7, exact, carry_label);
+  // SPLIT and MERGE were accepted, and the carried door was seen on both units.
+  CHECK(v.stats.accepted[2] > 0);
+  CHECK(v.stats.accepted[3] > 0);
+  CHECK(v.count.at("B--+dB") > 0);
+  CHECK(v.count.at("-LR+dL") + v.count.at("-LR+lr+dL") > 0);
 }
