@@ -14,6 +14,11 @@ if(KSMC_SANITIZE)
   if(KSMC_SANITIZE MATCHES "undefined")
     list(APPEND KSMC_SANITIZE_FLAGS -fno-sanitize-recover=all)
   endif()
+  # GCC's -Wmaybe-uninitialized misfires on instrumented code (std::regex's std::function
+  # state at -O1 with ASan), so under -Werror it stays a warning in sanitized builds.
+  if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+    list(APPEND KSMC_SANITIZE_FLAGS -Wno-error=maybe-uninitialized)
+  endif()
   add_compile_options(${KSMC_SANITIZE_FLAGS})
   add_link_options(-fsanitize=${KSMC_SANITIZE})
   message(STATUS "ksmc: sanitizers: ${KSMC_SANITIZE}")
