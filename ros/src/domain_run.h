@@ -4,6 +4,7 @@
 // C++20) and include this header, the implementation is C++20.
 #pragma once
 
+#include <csignal>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -11,6 +12,13 @@
 namespace ksmc::ros_nodes {
 
 inline constexpr int kExitInterrupted = 130;  // runtime::cli::kExitInterrupted (Ctrl-C)
+
+// A run stopped by SIGINT, SIGTERM (roslaunch's stop, Slurm) or SIGHUP exits 128 + signal
+// after writing the complete outputs of its best state, marked "interrupted"; the node then
+// shuts down instead of waiting for the next input.
+inline bool interrupted(int exit_code) {
+  return exit_code == 128 + SIGINT || exit_code == 128 + SIGTERM || exit_code == 128 + SIGHUP;
+}
 
 struct RunSettings {
   long long iterations = 5000;

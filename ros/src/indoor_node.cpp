@@ -41,7 +41,9 @@ void process(const nav_msgs::OccupancyGrid& map, const rn::RunSettings& run,
     ROS_INFO("ksmc: map %u (%ux%u, %.3f m/cell): running indoor, %lld iterations", count, map.info.width, map.info.height,
              static_cast<double>(map.info.resolution), run.iterations);
     const rn::RunOutcome r = rn::run_indoor(yaml, out, run);
-    if (r.exit_code == rn::kExitInterrupted) {
+    if (rn::interrupted(r.exit_code)) {
+      ROS_WARN("ksmc: map %u: run interrupted (exit %d)%s%s; shutting down", count, r.exit_code,
+               output_root.empty() ? "" : ", outputs of the best state so far in ", output_root.empty() ? "" : out.c_str());
       ros::shutdown();
     } else if (r.exit_code != 0) {
       ROS_ERROR("ksmc: indoor run failed (exit %d): %s", r.exit_code, r.messages.c_str());

@@ -98,7 +98,7 @@ nlohmann::json read_json(const std::filesystem::path& path) {
 }
 
 // Runs one input in `work` into `out`. Throws std::runtime_error on a bad input or a
-// failed run (exit 130, interrupted, is returned).
+// failed run (a run stopped by a signal, rn::interrupted, is returned).
 Ran run_input(const Input& input, const Settings& s, const std::filesystem::path& work, const std::filesystem::path& out) {
   Ran ran;
   rn::RunOutcome r;
@@ -117,7 +117,7 @@ Ran run_input(const Input& input, const Settings& s, const std::filesystem::path
     r = rn::run_tabletop_cloud(work / "cloud.pcd", s.cloud_units, out, s.run);
   }
   ran.exit_code = r.exit_code;
-  if (r.exit_code == rn::kExitInterrupted) return ran;
+  if (rn::interrupted(r.exit_code)) return ran;
   if (r.exit_code != 0) throw std::runtime_error("table-top run failed (exit " + std::to_string(r.exit_code) + "): " + r.messages);
   if (ran.scene.is_null()) ran.scene = read_json(out / "scene.json");
   return ran;
@@ -156,7 +156,9 @@ int main(int argc, char** argv) {
       const auto out = output_root.empty() ? work / "out" : std::filesystem::path(output_root) / ("scene_" + std::to_string(count));
       try {
         const Ran ran = run_input(input, settings, work, out);
-        if (ran.exit_code == rn::kExitInterrupted) {
+        if (rn::interrupted(ran.exit_code)) {
+          ROS_WARN("ksmc: scene %u: run interrupted (exit %d)%s%s; shutting down", count, ran.exit_code,
+                   output_root.empty() ? "" : ", outputs of the best state so far in ", output_root.empty() ? "" : out.c_str());
           ros::shutdown();
         } else {
           const nlohmann::json graph = read_json(out / "scene_graph.json");
