@@ -70,6 +70,10 @@ struct DomainInput {
   FlagValues flags;
   std::uint64_t seed = 1;
   unsigned chains = 1;
+  unsigned threads = 0;            // --threads (0 = one per core)
+  std::uint64_t iterations = 0;    // per chain
+  std::uint64_t max_memory_mb = 0; // --max-memory-mb: kits refuse estimates above it (work_estimate.h)
+  bool quiet = false;              // --quiet: no estimate line, no progress
   std::filesystem::path out_dir;
 };
 

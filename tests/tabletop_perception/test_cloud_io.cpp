@@ -155,7 +155,9 @@ TEST_CASE("cloud_io refuses corrupt PCD files, naming the file and the place", "
   check_error("size.pcd", pcd_header("ascii", "x y z", "4 4") + "1 2 3\n", "3 fields, but SIZE, TYPE and COUNT give 2,");
   check_error("type.pcd", pcd_header("ascii", "x y z", "4 4 2", "F F F") + "1 2 3\n", "field \"z\": SIZE 2 TYPE F");
   check_error("huge.pcd", pcd_header("binary", "x y z", "4 4 4", "F F F", "99999999999") + "abc",
-              "WIDTH expects one count of at most the file size");
+              "header line 7: WIDTH expects one count of at most ");
+  check_error("area.pcd", "FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH 5000\nHEIGHT 5000\nDATA binary\n" + std::string(12, '\0'),
+              "25000000 points of 12 bytes need 300000000 bytes, the file has 12 after the header (truncated?)");
   check_error("trunc.pcd", pcd_header("binary", "x y z", "4 4 4", "F F F", "100") + std::string(100, '\0'),
               "100 points of 12 bytes need 1200 bytes, the file has 100 after the header (truncated?)");
   check_error("short.pcd", pcd_header("ascii") + "1 2 3\n" + std::string(30, ' '), "the body ends in point 1 of 5");
