@@ -136,6 +136,9 @@ run_cases() {
     if "$tabletop" --cloud probe.ply --out tprobe 2>&1 | grep -q "without PCL"; then
       skip "tabletop --cloud cases" "tabletop built without the perception front end"
     else
+      expect "cloud: /dev/zero" 1 "/dev/zero: expected a regular file" none tc -- "$tabletop" --cloud /dev/zero --out tc
+      mkfifo pipe.ply
+      expect "cloud: a pipe" 1 "pipe.ply: expected a regular file" none tc -- "$tabletop" --cloud pipe.ply --out tc
       printf 'PLY\nformat ascii 1.0\n' > notply.ply
       expect "cloud: not a PLY file" 1 "notply.ply: header line 1: not a PLY file" none tc -- "$tabletop" --cloud notply.ply --out tc
       { printf 'ply\nformat binary_little_endian 1.0\nelement vertex 100\nproperty float x\nproperty float y\nproperty float z\nend_header\n'; head -c 120 /dev/zero; } > trunc.ply
@@ -153,7 +156,7 @@ import random
 random.seed(1)
 print('ply\nformat ascii 1.0\nelement vertex 20000\nproperty float x\nproperty float y\nproperty float z\nend_header')
 for i in range(20000): print(random.random(), random.random(), random.random())" > cloud20k.ply
-      expect "tabletop cloud above --max-memory-mb" 1 "cloud20k.ply: 20000 points needs about" none tc -- "$tabletop" --cloud cloud20k.ply --max-memory-mb 40 --out tc
+      expect "tabletop cloud above --max-memory-mb" 1 "cloud20k.ply: a cloud of 20000 points needs about" none tc -- "$tabletop" --cloud cloud20k.ply --max-memory-mb 40 --out tc
     fi
   else
     skip "tabletop cases" "no $tabletop (kit not built)"

@@ -149,6 +149,14 @@ TEST_CASE("cloud_io refuses corrupt PLY files, naming the file and the place", "
               "header line 4: expected \"property <type> <name>\"");
 }
 
+TEST_CASE("cloud_io reads regular files only", "[perception][cloud_io]") {
+  CHECK(error_of("/dev/zero") == "/dev/zero: expected a regular file");
+  CHECK(error_of("/nonexistent/x.ply") == "/nonexistent/x.ply: cannot open file");
+  const fs::path dir = fs::temp_directory_path() / "ksmc_cloud_io" / "folder.ply";
+  fs::create_directories(dir);
+  CHECK(error_of(dir) == dir.string() + ": expected a regular file");
+}
+
 TEST_CASE("cloud_io refuses corrupt PCD files, naming the file and the place", "[perception][cloud_io]") {
   check_error("nodata.pcd", "VERSION 0.7\nFIELDS x y z\n", "no \"DATA\" line in the header");
   check_error("nox.pcd", pcd_header("ascii", "a y z") + "1 2 3\n", "header line 3: no field \"x\"");

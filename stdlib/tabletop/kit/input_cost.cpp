@@ -31,7 +31,7 @@ runtime::cli::WorkEstimate cloud_estimate(const std::string& file, std::size_t p
   const double n = static_cast<double>(points);
   runtime::cli::WorkEstimate e;
   e.input = file;
-  e.what = std::to_string(points) + " points";
+  e.what = "a cloud of " + std::to_string(points) + " points";
   e.memory_mb = kBaseMb + kBytesPerPoint * n / 1e6;
   e.seconds = kBaseSeconds + kSecondsPerPointSquared * n * n;  // the front end runs once, before the chains
   return e;

@@ -467,6 +467,11 @@ std::vector<double> read_pcd(std::string_view bytes, const std::string& file) {
 
 Points load_cloud(const std::filesystem::path& path, Units units) {
   const std::string name = path.string();
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (!std::filesystem::exists(status)) throw CloudError(fmt::format("{}: cannot open file", name));
+  if (!std::filesystem::is_regular_file(status))  // a folder, /dev/zero, a pipe: never opened nor read to the end
+    throw CloudError(fmt::format("{}: expected a regular file", name));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw CloudError(fmt::format("{}: cannot open file", name));
   std::string ext = path.extension().string();
