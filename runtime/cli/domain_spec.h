@@ -23,6 +23,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "runtime/cli/work_estimate.h"
 #include "runtime/io/staged_dir.h"
 #include "runtime/mcmc/engine.h"
 
@@ -72,7 +73,7 @@ struct DomainInput {
   unsigned chains = 1;
   unsigned threads = 0;            // --threads (0 = one per core)
   std::uint64_t iterations = 0;    // per chain
-  std::uint64_t max_memory_mb = 0; // --max-memory-mb: kits refuse estimates above it (work_estimate.h)
+  std::uint64_t max_memory_mb = kDefaultMaxMemoryMb;  // --max-memory-mb: kits refuse estimates above it
   bool quiet = false;              // --quiet: no estimate line, no progress
   std::filesystem::path out_dir;
 };
