@@ -30,7 +30,10 @@ add_library(ksmc_antlr4_runtime INTERFACE)
 if(CMAKE_CXX_COMPILER_ID MATCHES "Clang" AND EXISTS "${_ksmc_antlr_inc}/antlr4-runtime.h")
   file(READ "${_ksmc_antlr_inc}/antlr4-runtime.h" _ksmc_umbrella)
   string(REPLACE "#include \"misc/InterpreterDataReader.h\"" "" _ksmc_umbrella "${_ksmc_umbrella}")
-  file(WRITE "${CMAKE_BINARY_DIR}/antlr4-clang-shim/antlr4-runtime.h" "${_ksmc_umbrella}")
+  # Written only when its text changes, so configuring again does not recompile the parser.
+  file(WRITE "${CMAKE_BINARY_DIR}/antlr4-clang-shim/antlr4-runtime.h.new" "${_ksmc_umbrella}")
+  configure_file("${CMAKE_BINARY_DIR}/antlr4-clang-shim/antlr4-runtime.h.new"
+    "${CMAKE_BINARY_DIR}/antlr4-clang-shim/antlr4-runtime.h" COPYONLY)
   target_include_directories(ksmc_antlr4_runtime SYSTEM INTERFACE "${CMAKE_BINARY_DIR}/antlr4-clang-shim")
 endif()
 target_include_directories(ksmc_antlr4_runtime SYSTEM INTERFACE "${_ksmc_antlr_inc}")

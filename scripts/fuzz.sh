@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Fuzzes ksmc's readers with libFuzzer (compiler/fuzz, docs/reliability.md).
 #   scripts/fuzz.sh [seconds] [target ...]     seconds per target (default 60); default: all
-# Targets: fuzz_frontend fuzz_ksm_includes fuzz_db fuzz_scene fuzz_map.
+# Targets: fuzz_frontend fuzz_ksm_includes fuzz_db fuzz_scene fuzz_map fuzz_mln fuzz_cloud.
 # Configures a separate clang build of just the fuzz targets (compiler/fuzz/CMakeLists.txt,
 # ASan + UBSan) in $KSMC_FUZZ_BUILD_DIR (default build-fuzz). Each target starts from its
 # seed corpus in compiler/fuzz/corpus/<target> plus the repository's own inputs of that
@@ -14,19 +14,17 @@ ROOT="$PWD"
 SECONDS_TO_RUN="${1:-60}"
 shift || true
 TARGETS=("$@")
-[ ${#TARGETS[@]} -eq 0 ] && TARGETS=(fuzz_frontend fuzz_ksm_includes fuzz_db fuzz_scene fuzz_map)
+[ ${#TARGETS[@]} -eq 0 ] && TARGETS=(fuzz_frontend fuzz_ksm_includes fuzz_db fuzz_scene fuzz_map fuzz_mln fuzz_cloud)
 BUILD_DIR="${KSMC_FUZZ_BUILD_DIR:-build-fuzz}"
 JOBS="${KSMC_JOBS:-2}"
 CXX_BIN="${KSMC_FUZZ_CXX:-clang++}"
 
 command -v "$CXX_BIN" >/dev/null || { echo "fuzz.sh: $CXX_BIN not found"; exit 1; }
 mkdir -p "$BUILD_DIR"
-# Configure once (the build re-runs CMake when a CMakeLists changes): configuring again
-# rewrites the ANTLR shim header and would recompile everything.
-if [ ! -f "$BUILD_DIR/CMakeCache.txt" ]; then
-  cmake -S compiler/fuzz -B "$BUILD_DIR" -DCMAKE_CXX_COMPILER="$CXX_BIN" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    > "$BUILD_DIR/configure.log" 2>&1 || { cat "$BUILD_DIR/configure.log"; rm -f "$BUILD_DIR/CMakeCache.txt"; exit 1; }
-fi
+# Configured every time (cheap; it picks up new targets; the ANTLR shim header is rewritten
+# only when its text changes, so nothing recompiles).
+cmake -S compiler/fuzz -B "$BUILD_DIR" -DCMAKE_CXX_COMPILER="$CXX_BIN" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  > "$BUILD_DIR/configure.log" 2>&1 || { cat "$BUILD_DIR/configure.log"; exit 1; }
 cmake --build "$BUILD_DIR" --target "${TARGETS[@]}" -j "$JOBS" > "$BUILD_DIR/build.log" 2>&1 \
   || { tail -50 "$BUILD_DIR/build.log"; exit 1; }
 
@@ -38,13 +36,15 @@ repo_seeds() {
     fuzz_db) ls tests/compiler/infer/*/evidence.db 2>/dev/null ;;
     fuzz_scene) ls examples/tabletop/*.json tests/tabletop/data/*.json 2>/dev/null ;;
     fuzz_map) ls examples/indoor/*.pgm 2>/dev/null ;;
+    fuzz_mln) find examples/mln tests/compiler/alchemy -name '*.mln' 2>/dev/null | sort ;;
+    fuzz_cloud) find examples tests -name '*.ply' -o -name '*.pcd' 2>/dev/null | sort ;;
   esac
 }
 # Largest input libFuzzer may grow to: above the largest seed, so inputs can grow.
 max_len() {
   case "$1" in
     fuzz_map) echo 1048576 ;;   # an image of up to ~1000x1000 cells
-    fuzz_scene) echo 262144 ;;
+    fuzz_scene|fuzz_cloud) echo 262144 ;;   # fuzz_cloud: ~10,000 binary points
     *) echo 65536 ;;
   esac
 }

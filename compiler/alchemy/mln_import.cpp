@@ -8,6 +8,7 @@
 #include <memory>
 #include <set>
 #include <sstream>
+#include <utility>
 
 #include "compiler/check/pass.h"
 
@@ -197,6 +198,7 @@ class Translator {
   void statement(const std::string& line) {
     toks_ = tokenize(line);
     pos_ = 0;
+    var_types_.clear();
     if (peek().kind == Token::End) return;
     if (sym("#")) fail(peek(), "'#include' and other directives are not supported; merge the files");
     // type declaration: name = { ... }
@@ -438,6 +440,14 @@ class Translator {
           fail(a, "constant '" + a.text + "' must be declared in its type (" + type + " = {" + a.text +
                       ", ...}): ksm rules only name declared constants");
       }
+      if (k < it->second.types.size() && std::islower(static_cast<unsigned char>(a.text[0]))) {
+        // One type per variable in a formula (ksm rules are typed; Alchemy refuses it too).
+        const std::string& type = it->second.types[k];
+        const auto [seen, fresh] = var_types_.emplace(a.text, std::make_pair(type, a.col));
+        if (!fresh && seen->second.first != type)
+          fail(a, "variable '" + a.text + "' is of type '" + type + "' here but of type '" + seen->second.first +
+                      "' at column " + std::to_string(seen->second.second));
+      }
       n->args.push_back(a.text);
       if (sym(",")) { ++pos_; continue; }
       expect(")");
@@ -482,6 +492,7 @@ class Translator {
   std::vector<std::string> pred_order_, type_order_;
   std::map<std::string, std::vector<std::string>> enumerated_;
   std::map<std::string, std::string> constant_type_;
+  std::map<std::string, std::pair<std::string, int>> var_types_;  // the current formula's: type, first column
   std::ostringstream rules_, aux_decls_;
   std::vector<std::string> errors_;
   bool per_formula_ = false;

@@ -19,6 +19,7 @@
 #include "runtime/cli/interrupt.h"
 #include "runtime/cli/progress.h"
 #include "runtime/cli/run_outputs.h"
+#include "runtime/cli/work_estimate.h"
 #include "runtime/domain/config_error.h"
 #include "runtime/io/atomic_file.h"
 #include "runtime/mln/ground_bound.h"
@@ -42,6 +43,7 @@ struct CommonFlags {
   std::string trace_every = "0";
   std::string max_input_mb = std::to_string(kDefaultMaxInputMb);
   std::string max_ground_clauses = std::to_string(mln::kDefaultMaxGroundClauses);
+  std::string max_memory_mb = std::to_string(kDefaultMaxMemoryMb);
   bool quiet = false;
   std::string evidence_out;
   std::vector<std::string> inputs;
@@ -59,6 +61,7 @@ struct Counts {
   std::uint64_t trace_every = 0;
   std::uint64_t max_input_bytes = 0;
   std::uint64_t max_ground_clauses = 0;
+  std::uint64_t max_memory_mb = 0;
 };
 
 Counts check_counts(const CommonFlags& cf) {
@@ -74,6 +77,7 @@ Counts check_counts(const CommonFlags& cf) {
   const std::uint64_t mb = parse_count("--max-input-mb", cf.max_input_mb, 1);
   c.max_input_bytes = mb > kCountMax / 1000000 ? kCountMax : mb * 1000000;
   c.max_ground_clauses = parse_count("--max-ground-clauses", cf.max_ground_clauses, 1);
+  c.max_memory_mb = parse_count("--max-memory-mb", cf.max_memory_mb, 1);
   if (c.burn_in && *c.burn_in > c.iterations) {
     throw UsageError(fmt::format("--burn-in {} exceeds --iterations {}", *c.burn_in, c.iterations));
   }
@@ -216,7 +220,9 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
     app.add_option("--max-input-mb", cf.max_input_mb, "largest input file read, in MB")->capture_default_str();
     app.add_option("--max-ground-clauses", cf.max_ground_clauses,
                    "refuse a Markov logic grounding estimated above this many clauses")->capture_default_str();
-    app.add_flag("--quiet,-q", cf.quiet, "no progress display");
+    app.add_option("--max-memory-mb", cf.max_memory_mb,
+                   "refuse an input whose estimated memory is above this many MB")->capture_default_str();
+    app.add_flag("--quiet,-q", cf.quiet, "no progress display, no estimate line");
     app.add_option("--evidence-out", cf.evidence_out,
                    "write the best state's evidence as an Alchemy .db (replay with ksmc infer --evidence)")
         ->type_name("FILE");
@@ -287,6 +293,10 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
   input.flags = domain_flags;
   input.seed = counts.seed;
   input.chains = counts.chains;
+  input.threads = counts.threads;
+  input.iterations = counts.iterations;
+  input.max_memory_mb = counts.max_memory_mb;
+  input.quiet = cf.quiet;
   input.out_dir = cf.out;
 
   // From here on SIGINT, SIGTERM and SIGHUP only request cancellation (interrupt.h).

@@ -23,6 +23,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "runtime/cli/work_estimate.h"
 #include "runtime/io/staged_dir.h"
 #include "runtime/mcmc/engine.h"
 
@@ -70,6 +71,10 @@ struct DomainInput {
   FlagValues flags;
   std::uint64_t seed = 1;
   unsigned chains = 1;
+  unsigned threads = 0;            // --threads (0 = one per core)
+  std::uint64_t iterations = 0;    // per chain
+  std::uint64_t max_memory_mb = kDefaultMaxMemoryMb;  // --max-memory-mb: kits refuse estimates above it
+  bool quiet = false;              // --quiet: no estimate line, no progress
   std::filesystem::path out_dir;
 };
 

@@ -124,6 +124,40 @@ run_cases() {
     else
       skip "tabletop SIGINT in initial inference" "no python3 to write the crowded scene"
     fi
+    # Large inputs: the estimate is refused above --max-memory-mb (figure and flag named).
+    expect "--max-memory-mb 0" 2 "--max-memory-mb: expected a whole number from 1" none tm -- "$tabletop" scene.json --max-memory-mb 0 --out tm
+    if command -v python3 >/dev/null; then
+      python3 "$src/tests/badinput/make_crowded_scene.py" scene.json 200 > crowd200.json
+      expect "tabletop scene above --max-memory-mb" 1 "crowd200.json: a scene of 200 objects needs about" none tm -- "$tabletop" crowd200.json --max-memory-mb 64 --out tm
+      expect "tabletop scene above --max-memory-mb names the flag" 1 "above --max-memory-mb 64 (raise it" none tm -- "$tabletop" crowd200.json --max-memory-mb 64 --out tm
+    fi
+    # Point clouds (--cloud, when the kit has the perception front end): corrupt files.
+    printf 'ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\nend_header\n1 2 3\n' > probe.ply
+    if "$tabletop" --cloud probe.ply --out tprobe 2>&1 | grep -q "without PCL"; then
+      skip "tabletop --cloud cases" "tabletop built without the perception front end"
+    else
+      expect "cloud: /dev/zero" 1 "/dev/zero: expected a regular file" none tc -- "$tabletop" --cloud /dev/zero --out tc
+      mkfifo pipe.ply
+      expect "cloud: a pipe" 1 "pipe.ply: expected a regular file" none tc -- "$tabletop" --cloud pipe.ply --out tc
+      printf 'PLY\nformat ascii 1.0\n' > notply.ply
+      expect "cloud: not a PLY file" 1 "notply.ply: header line 1: not a PLY file" none tc -- "$tabletop" --cloud notply.ply --out tc
+      { printf 'ply\nformat binary_little_endian 1.0\nelement vertex 100\nproperty float x\nproperty float y\nproperty float z\nend_header\n'; head -c 120 /dev/zero; } > trunc.ply
+      expect "cloud: truncated binary PLY" 1 "trunc.ply: header line 3: 100 vertex elements of at least 12 bytes need 1200 bytes, the file has 120 left (truncated?)" none tc -- "$tabletop" --cloud trunc.ply --out tc
+      printf 'ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\nproperty float x\nproperty float y\nproperty float z\nend_header\n' > huge.ply
+      expect "cloud: huge element count" 1 "huge.ply: header line 3: expected \"element <name> <count>\" with a count of at most the file size" none tc -- "$tabletop" --cloud huge.ply --out tc
+      printf 'ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\nend_header\n1 2 3\n4 x 6\n' > word.ply
+      expect "cloud: a word in an ASCII PLY" 1 "word.ply: line 9: vertex 1: \"x\" is not a number" none tc -- "$tabletop" --cloud word.ply --out tc
+      printf 'VERSION 0.7\nFIELDS y z\nSIZE 4 4\nTYPE F F\nWIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA ascii\n1 2\n' > nox.pcd
+      expect "cloud: PCD with no x field" 1 "nox.pcd: header line 2: no field \"x\"" none tc -- "$tabletop" --cloud nox.pcd --out tc
+      { printf 'VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH 10\nHEIGHT 1\nPOINTS 10\nDATA binary_compressed\n'; printf '\x10\x00\x00\x00\x78\x00\x00\x00'; } > packed.pcd
+      expect "cloud: truncated compressed PCD" 1 "packed.pcd: byte 98: compressed size 16 exceeds the 0 bytes that follow (truncated?)" none tc -- "$tabletop" --cloud packed.pcd --out tc
+      python3 -c "
+import random
+random.seed(1)
+print('ply\nformat ascii 1.0\nelement vertex 20000\nproperty float x\nproperty float y\nproperty float z\nend_header')
+for i in range(20000): print(random.random(), random.random(), random.random())" > cloud20k.ply
+      expect "tabletop cloud above --max-memory-mb" 1 "cloud20k.ply: a cloud of 20000 points needs about" none tc -- "$tabletop" --cloud cloud20k.ply --max-memory-mb 40 --out tc
+    fi
   else
     skip "tabletop cases" "no $tabletop (kit not built)"
   fi
@@ -138,6 +172,9 @@ run_cases() {
     cp "$src/examples/indoor/sim_office.yaml" office.yaml
     expect "indoor SIGTERM mid-run" 143 "interrupted by SIGTERM" complete iterm -- timeout --foreground --preserve-status -s TERM 5 "$indoor" office.yaml --iterations 100000000000 --out iterm
     [ -d iterm ] && manifest_complete iterm "indoor: every file listed"
+    # Large maps: refused above --max-memory-mb with the estimate (a 600 x 400 map, limit 40 MB).
+    expect "indoor map above --max-memory-mb" 1 "sim_office.pgm: a 600 x 400 map needs about" none mm -- "$indoor" sim_office.pgm --max-memory-mb 40 --out mm
+    expect "indoor map above --max-memory-mb names the flag" 1 "above --max-memory-mb 40 (raise it to run anyway)" none mm -- "$indoor" sim_office.pgm --max-memory-mb 40 --out mm
   else
     skip "indoor cases" "no $indoor (kit not built)"
   fi

@@ -9,7 +9,9 @@
 #include <optional>
 #include <utility>
 #include <sstream>
+#include <thread>
 
+#include "runtime/cli/work_estimate.h"
 #include "runtime/domain/kernels.h"
 #include "runtime/io/cancel.h"
 #include "stdlib/indoor/detect/orientation.h"
@@ -191,6 +193,33 @@ FixedSources fixed_sources(const KitPlan& plan, const io::OccupancyMap& map, con
   return out;
 }
 
+// The cost of a run on `map` (issue 16). Measured with `/usr/bin/time -v indoor MAP.pgm
+// --iterations 500|2000` on maps tiled from examples/indoor/sim_office.pgm (1200 x 800 to
+// 7200 x 4800 cells; docs/reliability.md, "Bounded work", lists the runs):
+//  * peak RSS = 75 MB + 38 bytes per cell, the same for 1, 2 or 4 chains (the map is shared);
+//  * time = 1 s + (5e-7 s x cells + 7e-14 s x cells^2 (model construction: 90 s at 34.6 M
+//    cells, 6 s at 8.6 M) + iterations x (0.5 ms + 5e-11 s x cells)) x chain rounds.
+// At 10000 x 10000 cells and the default 10,000 iterations that is 3.9 GB and ~14 min
+// (issue 16 measured 3.5 GB and 12-22 min). Times were taken on 2 shared cores (load ~10):
+// expect a factor of 2 either way.
+cli::WorkEstimate map_estimate(const std::filesystem::path& path, const io::OccupancyMap& map, const cli::DomainInput& in) {
+  constexpr double kBaseMb = 75.0, kBytesPerCell = 38.0;
+  constexpr double kBaseSeconds = 1.0, kBuildPerCell = 5e-7, kBuildPerCellSquared = 7e-14;
+  constexpr double kIterationSeconds = 5e-4, kIterationPerCell = 5e-11;
+  const double cells = static_cast<double>(map.rows()) * map.cols();
+  const double threads = in.threads != 0 ? in.threads : std::max(1U, std::thread::hardware_concurrency());
+  const double chains = std::max(1U, in.chains);
+  const double rounds = std::ceil(chains / std::min(threads, chains));
+  const double per_chain = kBuildPerCell * cells + kBuildPerCellSquared * cells * cells +
+                           static_cast<double>(in.iterations) * (kIterationSeconds + kIterationPerCell * cells);
+  cli::WorkEstimate e;
+  e.input = path.string();
+  e.what = "a " + std::to_string(map.cols()) + " x " + std::to_string(map.rows()) + " map";
+  e.memory_mb = kBaseMb + kBytesPerCell * cells / 1e6;
+  e.seconds = kBaseSeconds + per_chain * rounds;
+  return e;
+}
+
 cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, const cli::DomainInput& in) {
   auto shared = std::make_shared<SharedInput>();
   shared->binding = binding;
@@ -219,12 +248,7 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
   auto map = std::make_shared<io::OccupancyMap>(io::load_map(path, opts));
   for (const auto& w : map->warnings) std::fprintf(stderr, "%s\n", w.c_str());  // also in summary.json
   runtime::io::throw_if_cancelled("indoor: after reading the map");  // large maps: each step takes long
-  // Large maps say their cost up front (issue 16, measured at the default iterations: a
-  // 10000 x 10000 map took 12-22 min and 3.5 GB, i.e. about 35 bytes per cell).
-  if (const double cells = static_cast<double>(map->rows()) * map->cols(); cells > 1e7) {
-    std::fprintf(stderr, "indoor: %d x %d map (%.0f M cells): expect about %.1f GB of memory and %.0f-%.0f min\n",
-                 map->cols(), map->rows(), cells / 1e6, (6e7 + 35.0 * cells) / 1e9, 12.0 * cells / 1e8, 22.0 * cells / 1e8);
-  }
+  cli::check_work(map_estimate(path, *map, in), in);  // large maps: cost said up front, refused above --max-memory-mb
   if (map->counts().free == 0) throw std::runtime_error(path.string() + ": the map has no free cell");
   const double res = map->resolution;
   const double solid_depth = in.flags.real("solid-depth");

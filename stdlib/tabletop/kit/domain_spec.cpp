@@ -15,6 +15,7 @@
 #include "stdlib/tabletop/graph_dot.h"
 #include "stdlib/tabletop/hope_import.h"
 #include "stdlib/tabletop/kit/fit_kernel.h"
+#include "stdlib/tabletop/kit/input_cost.h"
 #include "stdlib/tabletop/kit/refine_kernel.h"
 #include "stdlib/tabletop/overlay.h"
 #include "stdlib/tabletop/scene_io.h"
@@ -76,7 +77,10 @@ Scene load_cloud_input(const cli::DomainInput& in, std::string& scene_json) {
   } catch (const std::invalid_argument& e) {
     throw cli::UsageError(std::string("--cloud-units: ") + e.what());
   }
-  perception::CloudScene cs = perception::scene_from_cloud(in.flags.text("cloud"), options);
+  const std::string file = in.flags.text("cloud");
+  const perception::Points points = perception::load_cloud(file, options.units);
+  cli::check_work(cloud_estimate(file, points.size(), in), in);  // large clouds: cost up front
+  perception::CloudScene cs = perception::scene_from_points(points, file, options);
   scene_json = perception::scene_json_text(cs.scene);
   return std::move(cs.scene);
 #else
@@ -199,6 +203,7 @@ cli::DomainSpec domain_spec(const blocks::Binding& binding) {
     auto scene = std::make_shared<const Scene>(
         cloud ? load_cloud_input(in, scene_json) : load_input(in.inputs.at(0), in.flags.text("input-format"), warnings));
     for (const auto& w : warnings) std::cerr << "tabletop: warning: " << w << "\n";
+    if (!cloud) cli::check_work(scene_estimate(in.inputs.at(0).string(), scene->objects.size(), in), in);
     KitSetup k = make_setup(*b, scene);
     if (!scene->image.empty()) k.setup.extra_inputs.push_back(scene->image);
     if (cloud) {

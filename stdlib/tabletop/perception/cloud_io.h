@@ -1,5 +1,7 @@
-// Point clouds in and out: PLY / PCD through PCL, with a unit scale to metres and
-// validation (empty cloud, NaN / infinite coordinates) that names the file.
+// Point clouds in and out: PLY / PCD with own readers (not PCL's, which trust the header:
+// a huge count or a truncated body aborts or allocates gigabytes), a unit scale to metres
+// and validation that names the file and the place (header line, body line, byte offset,
+// point).
 #pragma once
 
 #include <filesystem>
@@ -26,9 +28,13 @@ enum class Units { m, cm, mm };
 Units parse_units(std::string_view text);
 double metres_per_unit(Units units);
 
-// Reads `path` (.ply or .pcd, ASCII or binary) and scales it to metres. Throws CloudError
-// "<file>: ..." when the file is unreadable, has no points, or holds a NaN / infinite
-// coordinate (the message gives the index of the first bad point).
+// Reads `path` and scales it to metres: PLY (ascii, binary_little_endian / big_endian;
+// x, y, z of the first `vertex` element, any numeric type; other properties and elements,
+// lists included, read past) or PCD v0.5-0.7 (DATA ascii, binary, binary_compressed; fields
+// x, y, z of any numeric type). Throws CloudError "<file>: ..." when the file is
+// unreadable or corrupt (a count or size the bytes cannot hold, a missing x / y / z, a
+// non-number), has no points, or holds a NaN / infinite coordinate (the message gives the
+// index of the first bad point).
 Points load_cloud(const std::filesystem::path& path, Units units = Units::m);
 
 // Deterministic ASCII PLY (x y z, metres, 6 decimals), written atomically.
