@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/features2d.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 namespace ksmc::stdlib::tabletop::perception::stereo {
 
@@ -75,13 +76,18 @@ ObjectModel build_model(const fs::path& folder, const ModelOptions& options) {
     const cv::Mat img = cv::imread(file.string(), cv::IMREAD_GRAYSCALE);
     if (img.empty()) throw StereoError(fmt::format("{}: not a readable image", file.string()));
     ++textures;
-    std::vector<cv::KeyPoint> kps;
-    cv::Mat desc;
-    sift->detectAndCompute(img, cv::noArray(), kps, desc);
-    for (std::size_t i = 0; i < kps.size(); ++i) {
-      m.points.push_back(face_point(f, m.size, kps[i].pt.x, kps[i].pt.y, img.cols, img.rows));
-      m.faces.push_back(f);
-      m.descriptors.push_back(desc.row(static_cast<int>(i)));
+    for (const double scale : options.scales) {
+      cv::Mat level = img;
+      if (scale != 1.0) cv::resize(img, level, cv::Size(), scale, scale, cv::INTER_AREA);
+      if (level.cols < 16 || level.rows < 16) continue;
+      std::vector<cv::KeyPoint> kps;
+      cv::Mat desc;
+      sift->detectAndCompute(level, cv::noArray(), kps, desc);
+      for (std::size_t i = 0; i < kps.size(); ++i) {
+        m.points.push_back(face_point(f, m.size, kps[i].pt.x, kps[i].pt.y, level.cols, level.rows));
+        m.faces.push_back(f);
+        m.descriptors.push_back(desc.row(static_cast<int>(i)));
+      }
     }
   }
   if (textures == 0)

@@ -2,7 +2,7 @@
 // object.json ({"size": [x, y, z]} in metres) and one texture per box face
 // (face_px.png face_nx.png face_py.png face_ny.png face_pz.png face_nz.png). The 3D keypoint
 // model of an object is SIFT on each face texture, every keypoint lifted onto its face in the
-// object (box-centred) frame. `ksmc-objdb` writes it as model.yml (cv::FileStorage) next to
+// object (box-centred) frame (texture resampled to several scales, ModelOptions). `ksmc-objdb` writes it as model.yml (cv::FileStorage) next to
 // the textures; load_database reads model.yml or builds the model when it is absent.
 #pragma once
 
@@ -51,6 +51,9 @@ struct ObjectModel {
 struct ModelOptions {
   int max_features_per_face = 500;
   double contrast_threshold = 0.04;
+  // SIFT runs on each texture at these scales too (INTER_AREA): a face seen from afar is
+  // matched against keypoints detected at a similar resolution.
+  std::vector<double> scales{1.0, 0.5};
 };
 
 // Reads object.json and the six face textures of `folder` (a missing face is skipped; none

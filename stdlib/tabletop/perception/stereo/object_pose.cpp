@@ -11,14 +11,27 @@ namespace ksmc::stdlib::tabletop::perception::stereo {
 
 namespace {
 
-std::vector<int> ratio_matches(const cv::Mat& query, const cv::Mat& train, double ratio) {
+// Best model point of each query descriptor passing the ratio test, or -1. The second best
+// is the nearest descriptor of a model point more than `same_point` away from the best's:
+// SIFT gives one location several descriptors (orientations, texture scales), which must
+// not veto each other.
+std::vector<int> ratio_matches(const cv::Mat& query, const ObjectModel& model, double ratio, double same_point) {
   std::vector<int> out(static_cast<std::size_t>(query.rows), -1);
-  if (query.empty() || train.rows < 2) return out;
+  if (query.empty() || model.descriptors.rows < 2) return out;
   cv::BFMatcher matcher(cv::NORM_L2);
   std::vector<std::vector<cv::DMatch>> knn;
-  matcher.knnMatch(query, train, knn, 2);
-  for (const auto& m : knn)
-    if (m.size() == 2 && m[0].distance <= ratio * m[1].distance) out[static_cast<std::size_t>(m[0].queryIdx)] = m[0].trainIdx;
+  matcher.knnMatch(query, model.descriptors, knn, 6);
+  for (const auto& m : knn) {
+    if (m.size() < 2) continue;
+    const Eigen::Vector3d& best = model.points[static_cast<std::size_t>(m[0].trainIdx)];
+    float second = m.back().distance;
+    for (std::size_t j = 1; j < m.size(); ++j)
+      if ((model.points[static_cast<std::size_t>(m[j].trainIdx)] - best).norm() > same_point) {
+        second = m[j].distance;
+        break;
+      }
+    if (m[0].distance <= ratio * second) out[static_cast<std::size_t>(m[0].queryIdx)] = m[0].trainIdx;
+  }
   return out;
 }
 
@@ -61,11 +74,14 @@ struct Hypothesis {
 }  // namespace
 
 std::vector<Match3d> match_to_model(const StereoPoints& points, const ObjectModel& model, double ratio) {
-  const std::vector<int> l = ratio_matches(points.left_descriptors, model.descriptors, ratio);
-  const std::vector<int> r = ratio_matches(points.right_descriptors, model.descriptors, ratio);
+  constexpr double kSamePoint = 0.003;  // m
+  const std::vector<int> l = ratio_matches(points.left_descriptors, model, ratio, kSamePoint);
+  const std::vector<int> r = ratio_matches(points.right_descriptors, model, ratio, kSamePoint);
   std::vector<Match3d> out;
-  for (std::size_t i = 0; i < l.size(); ++i)
-    if (l[i] >= 0 && l[i] == r[i]) out.push_back({static_cast<int>(i), l[i]});
+  for (std::size_t i = 0; i < l.size(); ++i)  // both images name the same model location
+    if (l[i] >= 0 && r[i] >= 0 &&
+        (model.points[static_cast<std::size_t>(l[i])] - model.points[static_cast<std::size_t>(r[i])]).norm() <= kSamePoint)
+      out.push_back({static_cast<int>(i), l[i]});
   return out;
 }
 
