@@ -38,9 +38,25 @@ StereoScene scene_from_images(const cv::Mat& left, const cv::Mat& right, const s
   Scene& s = out.scene;
   s.camera = Camera{calib.k_left(0, 0), calib.k_left(1, 1), calib.k_left(0, 2), calib.k_left(1, 2), calib.width,
                     calib.height};
-  s.table_in_camera = calib.table_in_left;
-  s.table.size = calib.table_size;
-  const Pose table_from_camera = calib.table_in_left.inverse();
+  if (calib.table_in_left) {
+    s.table_in_camera = *calib.table_in_left;
+    s.table.size = calib.table_size;
+  } else {  // the table plane through the stereo points no object claimed
+    std::vector<bool> claimed(out.points.point.size(), false);
+    for (const ObjectDetection& d : found)
+      for (int i : d.inliers) claimed[static_cast<std::size_t>(i)] = true;
+    std::vector<Eigen::Vector3d> rest;
+    for (std::size_t i = 0; i < claimed.size(); ++i)
+      if (!claimed[i]) rest.push_back(out.points.point[i]);
+    out.table = table_from_points(rest, options.table);
+    if (!out.table)
+      throw StereoError(fmt::format("{}: no table: no plane holds enough of the {} unclaimed stereo points, and the "
+                                    "calibration gives no table_R / table_t",
+                                    left_name, rest.size()));
+    s.table_in_camera = out.table->table_in_left;
+    s.table.size = out.table->size;
+  }
+  const Pose table_from_camera = s.table_in_camera.inverse();
   for (ObjectDetection& d : found) {
     const ObjectModel& m = db[static_cast<std::size_t>(d.object)];
     if (options.refine) {

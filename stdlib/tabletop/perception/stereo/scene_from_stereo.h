@@ -1,6 +1,7 @@
 // The stereo front end (issue 13, part 4; seed Alg. 2): a stereo pair, its calibration and
 // an object database -> the stdlib/tabletop Scene the kit consumes: camera = the left
-// camera, table from the calibration, one object per database object found (id and model
+// camera, the table from the calibration or else fitted to the stereo points
+// (stereo_table.h), one object per database object found (id and model
 // = its folder name, the database box size, the estimated pose) with its inlier keypoints
 // (left pixel + model point) for the reprojection likelihood (eq. 4.4).
 #pragma once
@@ -13,6 +14,7 @@
 
 #include "stdlib/tabletop/perception/stereo/object_pose.h"
 #include "stdlib/tabletop/perception/stereo/stereo_points.h"
+#include "stdlib/tabletop/perception/stereo/stereo_table.h"
 #include "stdlib/tabletop/scene.h"
 
 namespace ksmc::stdlib::tabletop::perception::stereo {
@@ -21,6 +23,7 @@ struct StereoSceneOptions {
   StereoOptions stereo;
   PoseOptions pose;
   ModelOptions model;
+  TableOptions table;
   bool refine = true;  // reprojection refinement of each pose (pose_refine.h)
 };
 
@@ -28,6 +31,7 @@ struct StereoScene {
   Scene scene;
   StereoPoints points;
   std::vector<ObjectDetection> detections;  // same order as scene.objects
+  std::optional<StereoTable> table;         // when fitted (no table in the calibration)
 };
 
 // Reads an 8-bit image as grey; StereoError naming the file when unreadable.

@@ -82,10 +82,16 @@ StereoCalib load_calib(const fs::path& file) {
   check_rotation(c.r, "R", file);
   c.t = read_matrix<3, 1>(fs, "t", file);
   if (c.t.norm() < 1e-4) throw StereoError(fmt::format("{}: t: zero baseline", file.string()));
-  const Eigen::Matrix3d tr = read_matrix<3, 3>(fs, "table_R", file);
-  check_rotation(tr, "table_R", file);
-  c.table_in_left.q = Eigen::Quaterniond(tr).normalized();
-  c.table_in_left.t = read_matrix<3, 1>(fs, "table_t", file);
+  if (fs["table_R"].empty() != fs["table_t"].empty())
+    throw StereoError(fmt::format("{}: table_R and table_t: give both or neither", file.string()));
+  if (!fs["table_R"].empty()) {
+    const Eigen::Matrix3d tr = read_matrix<3, 3>(fs, "table_R", file);
+    check_rotation(tr, "table_R", file);
+    Pose table;
+    table.q = Eigen::Quaterniond(tr).normalized();
+    table.t = read_matrix<3, 1>(fs, "table_t", file);
+    c.table_in_left = table;
+  }
   if (!fs["table_size"].empty()) c.table_size = read_matrix<3, 1>(fs, "table_size", file);
   return c;
 }
@@ -103,11 +109,13 @@ void save_calib(const fs::path& file, const StereoCalib& c) {
   fs << "R" << m;
   cv::eigen2cv(c.t, m);
   fs << "t" << m;
-  const Eigen::Matrix3d tr = c.table_in_left.rotation();
-  cv::eigen2cv(tr, m);
-  fs << "table_R" << m;
-  cv::eigen2cv(c.table_in_left.t, m);
-  fs << "table_t" << m;
+  if (c.table_in_left) {
+    const Eigen::Matrix3d tr = c.table_in_left->rotation();
+    cv::eigen2cv(tr, m);
+    fs << "table_R" << m;
+    cv::eigen2cv(c.table_in_left->t, m);
+    fs << "table_t" << m;
+  }
   cv::eigen2cv(c.table_size, m);
   fs << "table_size" << m;
 }

@@ -206,8 +206,8 @@ StereoPair render_pair(const Rig& rig, const std::vector<TexturedBox>& boxes, st
   cv::Mat table;
   procedural_texture(static_cast<int>(rig.table_half.x() * 1000.0), static_cast<int>(rig.table_half.y() * 1000.0),
                      seed ^ 0x7AB1EULL)
-      .convertTo(table, CV_32F, 0.3, 100.0);  // low-contrast table top
-  cv::GaussianBlur(table, table, cv::Size(0, 0), 2.0);
+      .convertTo(table, CV_32F, 0.5, 70.0);  // a less contrasted table top
+  cv::GaussianBlur(table, table, cv::Size(0, 0), 1.0);
   cv::RNG rng(seed);
   StereoPair out;
   out.left = render_view(rig, rig.table_from_left, prep, table, plain.data(), rng);
