@@ -1,6 +1,6 @@
 // Bad input to `tabletop --stereo` and `ksmc-objdb`: each a non-zero exit and a message
 // naming the file (images of different sizes, missing / malformed calibration, an object
-// with no features, an unreadable image, arguments that do not fit).
+// with no features, no table anywhere, an unreadable image, arguments that do not fit).
 #include <catch2/catch.hpp>
 
 #include <cstdlib>
@@ -108,6 +108,16 @@ TEST_CASE("tabletop --stereo: bad input names the file and exits non-zero", "[st
     INFO(t.text);
     CHECK(t.code != 0);
     CHECK(t.text.find(blank.string() + ": no SIFT features") != std::string::npos);
+  }
+  SECTION("no table: neither in the calibration nor among the stereo points") {
+    auto calib = ts::sy::rig_calib(ts::standard_rig());
+    calib.table_in_left.reset();
+    const fs::path no_table = f.dir / "no_table.yaml";
+    ts::st::save_calib(no_table, calib);
+    const Outcome o = f.tabletop(f.args(f.left, f.right, no_table, f.db));
+    INFO(o.text);
+    CHECK(o.code != 0);
+    CHECK(o.text.find(f.left.string() + ": no table") != std::string::npos);
   }
   SECTION("unreadable image") {
     const fs::path junk = f.dir / "junk.png";
