@@ -13,6 +13,7 @@
 //           the crate, in the air -> false.
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -35,7 +36,6 @@ struct E2eScene {
 
 inline E2eScene e2e_scene() {
   E2eScene s;
-  const double pi = 3.14159265358979323846;
   auto crate = sy::textured_box("crate", {0.22, 0.12, 0.13}, sy::upright(-0.12, 0.02, 0.065, 0.0), 11);
   const auto base = sy::textured_box("base", {0.16, 0.12, 0.06}, sy::upright(0.11, -0.07, 0.03, 0.3), 12);
   const auto top = sy::textured_box("top", {0.10, 0.08, 0.07}, sy::upright(0.11, -0.07, 0.095, 0.2), 13);
@@ -56,7 +56,6 @@ inline E2eScene e2e_scene() {
   pic.copyTo(side(cv::Rect(col0, row0, pic.cols, pic.rows)));
   s.picture_min = Eigen::Vector3d(-0.06, -0.06, z_centre - 0.035);
   s.picture_max = Eigen::Vector3d(0.06, -0.06, z_centre + 0.035);
-  (void)pi;
   s.present = {crate, base, top, black, lid};
   s.database = {crate, base, top, lid, poster};
   return s;

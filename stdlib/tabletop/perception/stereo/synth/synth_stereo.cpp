@@ -119,8 +119,8 @@ double ray_enter(const Eigen::Vector3d& o, const Eigen::Vector3d& d, const Eigen
 float bilinear(const cv::Mat& t, double x, double y) {
   x = std::clamp(x, 0.0, t.cols - 1.0);
   y = std::clamp(y, 0.0, t.rows - 1.0);
-  const int x0 = std::min(static_cast<int>(x), t.cols - 2 < 0 ? 0 : t.cols - 2);
-  const int y0 = std::min(static_cast<int>(y), t.rows - 2 < 0 ? 0 : t.rows - 2);
+  const int x0 = std::min(static_cast<int>(x), std::max(0, t.cols - 2));
+  const int y0 = std::min(static_cast<int>(y), std::max(0, t.rows - 2));
   const int x1 = std::min(x0 + 1, t.cols - 1), y1 = std::min(y0 + 1, t.rows - 1);
   const auto fx = static_cast<float>(x - x0), fy = static_cast<float>(y - y0);
   const float a = t.at<float>(y0, x0) * (1 - fx) + t.at<float>(y0, x1) * fx;
