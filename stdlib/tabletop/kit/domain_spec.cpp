@@ -23,6 +23,9 @@
 #include "stdlib/tabletop/perception/scene_from_cloud.h"
 #include "stdlib/tabletop/perception/scene_json.h"
 #endif
+#ifdef KSMC_HAVE_STEREO
+#include "stdlib/tabletop/perception/stereo/scene_from_stereo.h"
+#endif
 
 namespace ksmc::stdlib::tabletop::kit {
 
@@ -87,6 +90,25 @@ Scene load_cloud_input(const cli::DomainInput& in, std::string& scene_json) {
   (void)in;
   (void)scene_json;
   throw cli::UsageError("--cloud: this tabletop was built without PCL");
+#endif
+}
+
+// --stereo LEFT RIGHT --calib stereo.yaml --db DIR: the stereo front end (seed Alg. 2,
+// docs/perception.md). The objects found, with their keypoints, are written as OUT/scene.json.
+Scene load_stereo_input(const cli::DomainInput& in, std::string& scene_json) {
+  const std::string pair = in.flags.text("stereo");
+  const auto space = pair.find(' ');
+  if (space == std::string::npos) throw cli::UsageError("--stereo: expected LEFT RIGHT (two image files)");
+  if (!in.flags.given("calib") || !in.flags.given("db")) throw cli::UsageError("--stereo needs --calib FILE and --db DIR");
+#if defined(KSMC_HAVE_STEREO) && defined(KSMC_HAVE_PERCEPTION)
+  namespace st = perception::stereo;
+  st::StereoScene ss = st::scene_from_stereo(pair.substr(0, space), pair.substr(space + 1), in.flags.text("calib"),
+                                             in.flags.text("db"));
+  scene_json = perception::scene_json_text(ss.scene);
+  return std::move(ss.scene);
+#else
+  (void)scene_json;
+  throw cli::UsageError("--stereo: this tabletop was built without the stereo front end (OpenCV features2d)");
 #endif
 }
 
@@ -190,24 +212,38 @@ cli::DomainSpec domain_spec(const blocks::Binding& binding) {
                  cli::DomainFlag::Kind::text},
                 {"cloud", "point cloud (.ply/.pcd) instead of scene.json: table and boxes found, OUT/scene.json written",
                  "", cli::DomainFlag::Kind::path},
-                {"cloud-units", "units of the --cloud coordinates: m, cm or mm", "m", cli::DomainFlag::Kind::text}};
+                {"cloud-units", "units of the --cloud coordinates: m, cm or mm", "m", cli::DomainFlag::Kind::text},
+                {"stereo", "stereo pair LEFT RIGHT instead of scene.json (with --calib, --db): objects found, OUT/scene.json written",
+                 "", cli::DomainFlag::Kind::text, false, 2},
+                {"calib", "stereo rig calibration (stereo.yaml) for --stereo", "", cli::DomainFlag::Kind::path},
+                {"db", "object database folder for --stereo", "", cli::DomainFlag::Kind::path}};
   spec.min_inputs = 0;
   const blocks::Binding* b = &binding;
   // The binding is checked by make_setup inside `load`, where the CLI reports a ConfigError.
   spec.load = [b](const cli::DomainInput& in) {
     std::vector<std::string> warnings;
-    const bool cloud = in.flags.given("cloud");
-    if (in.inputs.size() != (cloud ? 0u : 1u))
-      throw cli::UsageError(cloud ? "--cloud replaces the scene.json input" : "expected one scene.json input");
+    const bool cloud = in.flags.given("cloud"), stereo = in.flags.given("stereo");
+    if (cloud && stereo) throw cli::UsageError("--cloud and --stereo exclude each other");
+    if (in.inputs.size() != (cloud || stereo ? 0u : 1u))
+      throw cli::UsageError(cloud ? "--cloud replaces the scene.json input"
+                                  : stereo ? "--stereo replaces the scene.json input" : "expected one scene.json input");
     std::string scene_json;
     auto scene = std::make_shared<const Scene>(
-        cloud ? load_cloud_input(in, scene_json) : load_input(in.inputs.at(0), in.flags.text("input-format"), warnings));
+        cloud    ? load_cloud_input(in, scene_json)
+        : stereo ? load_stereo_input(in, scene_json)
+                 : load_input(in.inputs.at(0), in.flags.text("input-format"), warnings));
     for (const auto& w : warnings) std::cerr << "tabletop: warning: " << w << "\n";
     if (!cloud) cli::check_work(scene_estimate(in.inputs.at(0).string(), scene->objects.size(), in), in);
     KitSetup k = make_setup(*b, scene);
     if (!scene->image.empty()) k.setup.extra_inputs.push_back(scene->image);
-    if (cloud) {
-      k.setup.extra_inputs.push_back(in.flags.text("cloud"));
+    if (stereo) {
+      const std::string pair = in.flags.text("stereo");
+      k.setup.extra_inputs.push_back(pair.substr(0, pair.find(' ')));
+      k.setup.extra_inputs.push_back(pair.substr(pair.find(' ') + 1));
+      k.setup.extra_inputs.push_back(in.flags.text("calib"));
+    }
+    if (cloud || stereo) {
+      if (cloud) k.setup.extra_inputs.push_back(in.flags.text("cloud"));
       k.setup.write_results = [write = std::move(k.setup.write_results), scene_json](
                                   const rm::RunResult& run, rm::Model& best, cli::OutputDir& out) {
         out.write("scene.json", scene_json);
