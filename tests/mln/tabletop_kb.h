@@ -93,7 +93,7 @@ struct TabletopKb {
          {{intersect, true, {0, 1}}, {false_est, false, {0}}, {false_est, false, {1}}});
     rule("r15", 24, 0.7, "supportive(o1) => !falseEst(o1)", 1, {{supportive, true, {0}}, {false_est, true, {0}}});
     rule("r16", 25, 0.9, "stable(o1) => !falseEst(o1)", 1, {{stable, true, {0}}, {false_est, true, {0}}});
-    // Additions of domains/tabletop.ksm (its lines 41-65).
+    // Additions of domains/tabletop.ksm (its lines 41-66).
     rule("r17", 41, 0.9, "!supported(o1)", 1, {{supported, true, {0}}});
     rule("r18", 46, 0.9, "stable(o1) ^ !table(o1) => supported(o1) v hidden(o1) v falseEst(o1)", 1,
          {{stable, true, {0}}, {table, false, {0}}, {supported, false, {0}}, {hidden, false, {0}},
@@ -103,8 +103,9 @@ struct TabletopKb {
     rule("r20", 53, 0.9, "!stable(o1) => !hidden(o1)", 1, {{stable, false, {0}}, {hidden, true, {0}}});
     rule("r21", 57, 0.7, "!falseEst(o1)", 1, {{false_est, true, {0}}});
     rule("r22", 58, 0.7, "!hidden(o1)", 1, {{hidden, true, {0}}});
-    rule("r23", 65, 0.9, "overlap(o1, o2) ^ flatter(o1, o2) => falseEst(o2)", 2,
-         {{overlap, true, {0, 1}}, {flatter, true, {0, 1}}, {false_est, false, {1}}});
+    rule("r23", 66, 0.9, "overlap(o1, o2) ^ stable(o1) ^ stable(o2) ^ flatter(o1, o2) => falseEst(o2)", 2,
+         {{overlap, true, {0, 1}}, {stable, true, {0}}, {stable, true, {1}}, {flatter, true, {0, 1}},
+          {false_est, false, {1}}});
   }
 };
 
