@@ -41,6 +41,14 @@ struct SeedValues {
   static constexpr double flatter_margin = KsmValues::flatter_margin;
 };
 
+// The generated program's predicate named `name`, or -1.
+inline std::int32_t predicate_named(const char* name) {
+  const auto& predicates = gen::program().predicates;
+  for (std::size_t i = 0; i < predicates.size(); ++i)
+    if (predicates[i].name == name) return static_cast<std::int32_t>(i);
+  return -1;
+}
+
 template <class V>
 struct Fixture {
   static bool stable(const blk::Scene& s, const std::int32_t* c) {
@@ -75,8 +83,12 @@ struct Fixture {
     b.extractors.push_back({gen::kPred_intersect, &intersect, "extract intersect(a, b) = obb.intersect(...)"});
     b.extractors.push_back({gen::kPred_higher, &higher, "extract higher(a, b) = obb.higher(...)"});
     b.extractors.push_back({gen::kPred_hover, &hover, "extract hover(o) = obb.hover(o, ...)"});
-    b.extractors.push_back({gen::kPred_overlap, &overlap, "extract overlap(a, b) = obb.overlap(...)"});
-    b.extractors.push_back({gen::kPred_flatter, &flatter, "extract flatter(a, b) = obb.flatter(...)"});
+    // By name: the learned copy of an older domain file (bench/tabletop/tabletop_learned.ksm,
+    // tabletop_family_eval_learned) declares neither.
+    if (const std::int32_t p = predicate_named("overlap"); p >= 0)
+      b.extractors.push_back({p, &overlap, "extract overlap(a, b) = obb.overlap(...)"});
+    if (const std::int32_t p = predicate_named("flatter"); p >= 0)
+      b.extractors.push_back({p, &flatter, "extract flatter(a, b) = obb.flatter(...)"});
     b.extractors.push_back({gen::kPred_table, &table, "extract table(o) = scene.is_table(o)"});
     b.priors.push_back(blk::mln());
     b.likelihood = blk::keypoints::gaussian(1.0, V::robust, V::outlier_px);
