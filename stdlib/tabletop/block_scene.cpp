@@ -18,8 +18,9 @@ Scene::Scene(tabletop::Scene input) : input_(std::move(input)) {
   fits_.resize(n);
   for (const auto& o : input_.objects) input_poses_.push_back(o.pose);
   const EvidenceParams defaults;
-  vertical_tolerance_ = tabletop::vertical_tolerance(gap_noise(input_, defaults.stable_tol_rad), 3.0,
-                                                     defaults.intersect_eps, defaults.vertical_contact_eps);
+  const GapNoise noise = gap_noise(input_, defaults.stable_tol_rad);
+  vertical_tolerance_ = tabletop::vertical_tolerance(noise, 3.0, defaults.intersect_eps, defaults.vertical_contact_eps);
+  gap_sigma_ = tabletop::vertical_tolerance(noise, 1.0, 0.0, vertical_tolerance_ / 3.0);
 }
 
 const KeypointFit& Scene::fit(std::int32_t c) const {

@@ -68,6 +68,9 @@ class Scene {
   // The near-vertical contact / intersect tolerance of this scene [m]: 3 standard deviations
   // of its resting gaps (gap_noise.h) within [5 mm, 15 mm], from the input poses.
   double vertical_tolerance() const noexcept { return vertical_tolerance_; }
+  // One standard deviation of the scene's resting gaps [m] (gap_noise.h), from the input
+  // poses; a third of vertical_tolerance() when too few gaps were seen to judge.
+  double gap_sigma() const noexcept { return gap_sigma_; }
 
   // Moves object body c (c >= 1). One move at a time: commit() keeps it, undo() restores the
   // previous pose and geometry.
@@ -97,6 +100,7 @@ class Scene {
   std::vector<Pose> input_poses_;                     // per object, as given
   mutable std::vector<std::optional<KeypointFit>> fits_;  // per body, on first use
   double vertical_tolerance_ = 0.0;
+  double gap_sigma_ = 0.0;
   mutable std::vector<Obb> boxes_;
   mutable std::vector<char> box_valid_;
   mutable std::vector<PairSlot> pairs_;  // [min][max], n x n

@@ -5,6 +5,7 @@
 #include "stdlib/tabletop/extract_contact.h"
 #include "stdlib/tabletop/extract_higher.h"
 #include "stdlib/tabletop/extract_intersect.h"
+#include "stdlib/tabletop/extract_overlap.h"
 #include "stdlib/tabletop/extract_stable.h"
 
 namespace ksmc::stdlib::tabletop::blocks {
@@ -80,6 +81,17 @@ bool hover(const Scene& s, std::int32_t o, double eps) {
   for (std::size_t j = 0; j < s.bodies(); ++j)
     if (static_cast<std::int32_t>(j) != o && touching(s, o, static_cast<std::int32_t>(j), eps)) return false;
   return true;
+}
+
+bool overlap(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, double min_fraction) {
+  if (one_body(pose_a, size_a) && one_body(pose_b, size_b) && pose_a.body == pose_b.body) return false;
+  // Only a pair whose solids overlap can share volume (the cached SAT test decides cheaply).
+  if (!geometry(s, pose_a, size_a, pose_b, size_b, 0.0).overlapping) return false;
+  return extract_overlap(box_of(s, pose_a, size_a), box_of(s, pose_b, size_b), s.gap_sigma(), min_fraction);
+}
+
+bool flatter(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, double margin) {
+  return extract_flatter(box_of(s, pose_a, size_a), box_of(s, pose_b, size_b), margin);
 }
 
 }  // namespace obb

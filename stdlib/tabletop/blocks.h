@@ -71,6 +71,11 @@ bool higher(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b);
 // Constant o touches no other body, the table included (gap above eps [m] from every body).
 // The table itself never hovers.
 bool hover(const Scene& s, std::int32_t o, double eps);
+// The boxes share at least `min_fraction` of the smaller one's volume, both shrunk by the
+// scene's gap-noise standard deviation on every side (extract_overlap.h).
+bool overlap(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, double min_fraction);
+// a's tilt is smaller than b's by more than margin [rad] (extract_overlap.h).
+bool flatter(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, double margin);
 }  // namespace obb
 
 namespace scene {

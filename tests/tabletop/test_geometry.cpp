@@ -2,11 +2,13 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "stdlib/tabletop/extract_contact.h"
 #include "stdlib/tabletop/extract_higher.h"
 #include "stdlib/tabletop/extract_intersect.h"
+#include "stdlib/tabletop/extract_overlap.h"
 #include "stdlib/tabletop/extract_stable.h"
 #include "stdlib/tabletop/obb_distance.h"
 #include "stdlib/tabletop/obb_sat.h"
@@ -283,4 +285,32 @@ TEST_CASE("vertical tolerances apply to stacking only, not to a thin box pushed 
   // A 1 cm lateral gap between side-by-side boxes is never contact (lateral tolerance 4 mm).
   const Obb side = box(Vector3d(0.2 + 0.01, 0, 0.1), Vector3d(0.2, 0.2, 0.2));
   CHECK_FALSE(extract_contact(side, big, kParams));
+}
+
+TEST_CASE("overlap: shared share of the smaller box, shrunk by the noise; flatter by tilt", "[geometry]") {
+  const Obb a = cube_on_table();
+  CHECK(shared_volume_fraction(a, a, 0.0) == Approx(1.0));
+  // Shifted by half its width: half of it inside the other (the grid has no cell on the cut).
+  const Obb half = cube_on_table(0.0, Vector3d(0.05, 0.0, 0.0));
+  CHECK(shared_volume_fraction(a, half, 0.0) == Approx(0.5));
+  CHECK(shared_volume_fraction(half, a, 0.0) == Approx(0.5));
+  // Shrinking both by 1 cm per side: 8 cm cubes 5 cm apart share 3 of 8 cm.
+  CHECK(shared_volume_fraction(a, half, 0.01) == Approx(0.375));
+  CHECK(extract_overlap(a, half, 0.0, 0.5));
+  CHECK_FALSE(extract_overlap(a, half, 0.01, 0.5));
+  // A small box inside a large one: all of the smaller one.
+  const Obb small = box(Vector3d(0.0, 0.0, 0.05), Vector3d(0.02, 0.02, 0.02));
+  CHECK(shared_volume_fraction(a, small, 0.0) == Approx(1.0));
+  // Two boxes pressed 3 mm into each other by noise share 3 % of a 10 cm cube; apart: nothing.
+  CHECK(shared_volume_fraction(a, cube_on_table(0.0, Vector3d(0.097, 0.0, 0.0)), 0.0) < 0.07);
+  CHECK(shared_volume_fraction(a, cube_on_table(0.0, Vector3d(0.2, 0.0, 0.0)), 0.0) == 0.0);
+  // Shrunk to nothing: no shared volume.
+  CHECK(shared_volume_fraction(a, a, 0.06) == 0.0);
+
+  const Obb tilted = box(Vector3d(0.0, 0.0, 0.05), Vector3d(0.1, 0.1, 0.1), rot(3.0, Vector3d::UnitX()));
+  const double margin = 0.5 * std::numbers::pi / 180.0;
+  CHECK(extract_flatter(a, tilted, margin));
+  CHECK_FALSE(extract_flatter(tilted, a, margin));
+  CHECK_FALSE(extract_flatter(a, a, 0.0));
+  CHECK_FALSE(extract_flatter(a, tilted, 5.0 * std::numbers::pi / 180.0));
 }

@@ -15,7 +15,8 @@ namespace ksmc::tests::tabletop_kit {
 namespace blk = ksmc::stdlib::tabletop::blocks;
 namespace gen = ksmc_generated::tabletop;
 
-// domains/tabletop.ksm (10 deg, 4 mm, 5 mm, 4 mm; robust Gaussian, 5 px).
+// domains/tabletop.ksm (10 deg, 4 mm, 5 mm, 4 mm; robust Gaussian, 5 px; overlap 0.5 of the
+// smaller box, flatter by 0.5 deg).
 struct KsmValues {
   static constexpr double stable_tol = 0.17453292519943295;
   static constexpr double contact_eps = 0.004;
@@ -23,9 +24,12 @@ struct KsmValues {
   static constexpr double hover_eps = 0.004;
   static constexpr bool robust = true;
   static constexpr double outlier_px = 5.0;
+  static constexpr double overlap_fraction = 0.5;
+  static constexpr double flatter_margin = 0.008726646259971648;
 };
 
-// A literal reading of the seed: 3 deg, 4 mm, 4 mm, plain Gaussian (sigma 1 px).
+// A literal reading of the seed: 3 deg, 4 mm, 4 mm, plain Gaussian (sigma 1 px). The seed has
+// no overlap / flatter evidence; the domain file's values serve its rule r23.
 struct SeedValues {
   static constexpr double stable_tol = 0.05235987755982988;
   static constexpr double contact_eps = 0.004;
@@ -33,7 +37,17 @@ struct SeedValues {
   static constexpr double hover_eps = 0.004;
   static constexpr bool robust = false;
   static constexpr double outlier_px = 20.0;
+  static constexpr double overlap_fraction = KsmValues::overlap_fraction;
+  static constexpr double flatter_margin = KsmValues::flatter_margin;
 };
+
+// The generated program's predicate named `name`, or -1.
+inline std::int32_t predicate_named(const char* name) {
+  const auto& predicates = gen::program().predicates;
+  for (std::size_t i = 0; i < predicates.size(); ++i)
+    if (predicates[i].name == name) return static_cast<std::int32_t>(i);
+  return -1;
+}
 
 template <class V>
 struct Fixture {
@@ -50,6 +64,12 @@ struct Fixture {
     return blk::obb::higher(s, s.se3(c[0]), s.vec3(c[0]), s.se3(c[1]), s.vec3(c[1]));
   }
   static bool hover(const blk::Scene& s, const std::int32_t* c) { return blk::obb::hover(s, c[0], V::hover_eps); }
+  static bool overlap(const blk::Scene& s, const std::int32_t* c) {
+    return blk::obb::overlap(s, s.se3(c[0]), s.vec3(c[0]), s.se3(c[1]), s.vec3(c[1]), V::overlap_fraction);
+  }
+  static bool flatter(const blk::Scene& s, const std::int32_t* c) {
+    return blk::obb::flatter(s, s.se3(c[0]), s.vec3(c[0]), s.se3(c[1]), s.vec3(c[1]), V::flatter_margin);
+  }
   static bool table(const blk::Scene& s, const std::int32_t* c) { return blk::scene::is_table(s, c[0]); }
 
   static blk::Binding make(bool decisions = true) {
@@ -63,6 +83,12 @@ struct Fixture {
     b.extractors.push_back({gen::kPred_intersect, &intersect, "extract intersect(a, b) = obb.intersect(...)"});
     b.extractors.push_back({gen::kPred_higher, &higher, "extract higher(a, b) = obb.higher(...)"});
     b.extractors.push_back({gen::kPred_hover, &hover, "extract hover(o) = obb.hover(o, ...)"});
+    // By name: the learned copy of an older domain file (bench/tabletop/tabletop_learned.ksm,
+    // tabletop_family_eval_learned) declares neither.
+    if (const std::int32_t p = predicate_named("overlap"); p >= 0)
+      b.extractors.push_back({p, &overlap, "extract overlap(a, b) = obb.overlap(...)"});
+    if (const std::int32_t p = predicate_named("flatter"); p >= 0)
+      b.extractors.push_back({p, &flatter, "extract flatter(a, b) = obb.flatter(...)"});
     b.extractors.push_back({gen::kPred_table, &table, "extract table(o) = scene.is_table(o)"});
     b.priors.push_back(blk::mln());
     b.likelihood = blk::keypoints::gaussian(1.0, V::robust, V::outlier_px);

@@ -14,6 +14,7 @@
 #include "runtime/mln/log_z.h"
 #include "runtime/mcmc/rng.h"
 #include "stdlib/tabletop/evidence.h"
+#include "stdlib/tabletop/extract_overlap.h"
 #include "stdlib/tabletop/kit/kit_likelihood.h"
 #include "stdlib/tabletop/kit/refine_kernel.h"
 #include "stdlib/tabletop/kit/tabletop_model.h"
@@ -203,6 +204,10 @@ TEST_CASE("prior mln is the log-weight of the most probable world given the evid
       e.set(gen::kPred_contact, xy, a != b && ev.contact[a][b]);
       e.set(gen::kPred_intersect, xy, a != b && ev.intersect[a][b]);
       e.set(gen::kPred_higher, xy, a != b && ev.higher[a][b]);
+      // overlap / flatter as domains/tabletop.ksm extracts them (0.5 of the smaller box, 0.5 deg).
+      e.set(gen::kPred_overlap, xy,
+            a != b && tt::extract_overlap(ev.boxes[a], ev.boxes[b], model.block_scene().gap_sigma(), 0.5));
+      e.set(gen::kPred_flatter, xy, tt::extract_flatter(ev.boxes[a], ev.boxes[b], 0.008726646259971648));
     }
   }
   const mln::Grounding g = mln::ground(program, domain, e);  // the generic grounder

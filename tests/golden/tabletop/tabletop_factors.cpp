@@ -20,6 +20,7 @@ constexpr double kW_falseest_b00b = 2.1972245773362196;  // prob 0.9
 constexpr double kW_hidden_8a9f = 2.1972245773362196;  // prob 0.9
 constexpr double kW_falseest_317c = 0.8472978603872034;  // prob 0.7
 constexpr double kW_hidden_5734 = 0.8472978603872034;  // prob 0.7
+constexpr double kW_falseest_cfb1 = 2.1972245773362196;  // prob 0.9
 
 }  // namespace
 
@@ -37,6 +38,8 @@ const mln::Program& program() {
     p.add_predicate({"supportive", {kType_object}, true, false, -1});
     p.add_predicate({"hidden", {kType_object}, true, false, -1});
     p.add_predicate({"falseEst", {kType_object}, true, false, -1});
+    p.add_predicate({"overlap", {kType_object, kType_object}, false, false, -1});
+    p.add_predicate({"flatter", {kType_object, kType_object}, false, false, -1});
     // higher_95b7: hard !higher(o, o)
     p.add_clause({"higher_95b7",
                   {{"o", kType_object, false}},
@@ -151,6 +154,11 @@ const mln::Program& program() {
                   {{"o", kType_object, false}},
                   {{kPred_hidden, true, {mln::Term::var(0)}}},
                   kW_hidden_5734, false, "!hidden(o)", {"domains/tabletop.ksm", 0}});
+    // falseest_cfb1: overlap(a, b) ^ stable(a) ^ stable(b) ^ flatter(a, b) => falseEst(b)
+    p.add_clause({"falseest_cfb1",
+                  {{"a", kType_object, false}, {"b", kType_object, false}},
+                  {{kPred_overlap, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_stable, true, {mln::Term::var(0)}}, {kPred_stable, true, {mln::Term::var(1)}}, {kPred_flatter, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_falseEst, false, {mln::Term::var(1)}}},
+                  kW_falseest_cfb1, false, "overlap(a, b) ^ stable(a) ^ stable(b) ^ flatter(a, b) => falseEst(b)", {"domains/tabletop.ksm", 0}});
     return p;
   }();
   return p;
@@ -505,6 +513,34 @@ void ground_hidden_5734(mln::FactorContext& g, std::int32_t clause) {
   }
 }
 
+// falseest_cfb1: overlap(a, b) ^ stable(a) ^ stable(b) ^ flatter(a, b) => falseEst(b)
+void ground_falseest_cfb1(mln::FactorContext& g, std::int32_t clause) {
+  const std::int32_t n_object = g.size(kType_object);
+  for (std::int32_t v_a = 0; v_a < n_object; ++v_a) {
+    if (!g.ev(kPred_stable, v_a)) {  // !stable(a)
+      g.satisfied(kW_falseest_cfb1, std::int64_t{n_object});
+      continue;
+    }
+    for (std::int32_t v_b = 0; v_b < n_object; ++v_b) {
+      if (!g.ev(kPred_overlap, std::int64_t{v_a} * n_object + v_b)) {  // !overlap(a, b)
+        g.satisfied(kW_falseest_cfb1);
+        continue;
+      }
+      if (!g.ev(kPred_stable, v_b)) {  // !stable(b)
+        g.satisfied(kW_falseest_cfb1);
+        continue;
+      }
+      if (!g.ev(kPred_flatter, std::int64_t{v_a} * n_object + v_b)) {  // !flatter(a, b)
+        g.satisfied(kW_falseest_cfb1);
+        continue;
+      }
+      g.begin();
+      if (g.query(kPred_falseEst, v_b, false)) { g.satisfied(kW_falseest_cfb1); continue; }  // falseEst(b)
+      g.soft(kW_falseest_cfb1, clause);
+    }
+  }
+}
+
 }  // namespace
 
 mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) {
@@ -534,6 +570,7 @@ mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) 
   ground_hidden_8a9f(g, clause++);
   ground_falseest_317c(g, clause++);
   ground_hidden_5734(g, clause++);
+  ground_falseest_cfb1(g, clause++);
   mln::fold_forced_atoms(grounding);
   return grounding;
 }

@@ -24,6 +24,8 @@ enum Pred : std::int32_t {
   kPred_supportive = 7,  // query supportive(object)
   kPred_hidden = 8,  // query hidden(object)
   kPred_falseEst = 9,  // query falseEst(object)
+  kPred_overlap = 10,  // evidence overlap(object, object)
+  kPred_flatter = 11,  // evidence flatter(object, object)
 };
 
 // The clause program this file was generated from: names, weights, source locations.
