@@ -233,12 +233,14 @@ cli::DomainSpec domain_spec(const blocks::Binding& binding) {
         : stereo ? load_stereo_input(in, scene_json)
                  : load_input(in.inputs.at(0), in.flags.text("input-format"), warnings));
     for (const auto& w : warnings) std::cerr << "tabletop: warning: " << w << "\n";
-    if (!cloud) cli::check_work(scene_estimate(in.inputs.at(0).string(), scene->objects.size(), in), in);
+    const std::string pair = stereo ? in.flags.text("stereo") : std::string();  // "LEFT RIGHT"
+    const std::string left = pair.substr(0, pair.find(' '));
+    // (The cloud front end checked its estimate before reading the points.)
+    if (!cloud) cli::check_work(scene_estimate(stereo ? left : in.inputs.at(0).string(), scene->objects.size(), in), in);
     KitSetup k = make_setup(*b, scene);
     if (!scene->image.empty()) k.setup.extra_inputs.push_back(scene->image);
     if (stereo) {
-      const std::string pair = in.flags.text("stereo");
-      k.setup.extra_inputs.push_back(pair.substr(0, pair.find(' ')));
+      k.setup.extra_inputs.push_back(left);
       k.setup.extra_inputs.push_back(pair.substr(pair.find(' ') + 1));
       k.setup.extra_inputs.push_back(in.flags.text("calib"));
     }
