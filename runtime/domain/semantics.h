@@ -42,6 +42,7 @@
 #include <nlohmann/json.hpp>
 
 #include "runtime/domain/binding.h"
+#include "runtime/io/cancel.h"
 #include "runtime/mln/evidence_cache.h"
 
 namespace ksmc::runtime::domain {
@@ -172,7 +173,7 @@ std::shared_ptr<const Outcome> SemanticsCore::run(std::size_t n, bool full, std:
         bits[flat] = 0;
         continue;
       }
-      ++stats_.extractor_calls;
+      if ((++stats_.extractor_calls & 0xFFF) == 0) io::throw_if_cancelled("evaluating the evidence");
       bits[flat] = truth(k, args.data()) ? 1 : 0;
     }
   }

@@ -12,6 +12,8 @@
 
 #include <fmt/format.h>
 
+#include "runtime/io/cancel.h"
+
 namespace ksmc::runtime::mcmc {
 
 namespace {
@@ -144,6 +146,10 @@ ChainResult Engine::run_chain(unsigned chain, const EngineConfig& cfg, Monitor& 
   std::vector<const Kernel*> kernels(kernels_.size());
   for (std::size_t k = 0; k < kernels_.size(); ++k) kernels[k] = kernels_[k].get();
 
+  // While sampling, a cancellation request stops the chain between iterations (below), never
+  // inside one: polls in the model's own computations (grounding, inference, evidence) are
+  // shielded, so a signal cannot abandon a half-made proposal and lose the run's state.
+  const io::CancelShield between_iterations_only;
   while (done < cfg.iterations) {
     if ((cfg.cancel != nullptr && cfg.cancel->load(std::memory_order_relaxed)) ||
         abort.load(std::memory_order_relaxed)) {

@@ -19,6 +19,8 @@ double shared_volume_fraction(const Obb& a, const Obb& b, double shrink) {
   const Obb sa = shrunk(a, shrink);
   const Obb sb = shrunk(b, shrink);
   if ((sa.half.array() <= 0.0).any() || (sb.half.array() <= 0.0).any()) return 0.0;
+  // Apart by more than the two circumscribed spheres: nothing shared (most pairs of a scene).
+  if ((sa.center - sb.center).norm() > sa.half.norm() + sb.half.norm()) return 0.0;
   const bool a_smaller = sa.half.prod() <= sb.half.prod();
   const Obb& small = a_smaller ? sa : sb;
   const Obb& large = a_smaller ? sb : sa;
