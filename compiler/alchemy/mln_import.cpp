@@ -106,6 +106,13 @@ struct Node {
   std::unique_ptr<Node> a, b;
 };
 
+// Whether variable v occurs free in n (an inner EXIST over v hides it).
+bool occurs(const Node& n, const std::string& v) {
+  if (n.kind == Node::Atom) return std::find(n.args.begin(), n.args.end(), v) != n.args.end();
+  if (n.kind == Node::Exist && std::find(n.args.begin(), n.args.end(), v) != n.args.end()) return false;
+  return (n.a && occurs(*n.a, v)) || (n.b && occurs(*n.b, v));
+}
+
 struct PredInfo {
   std::vector<std::string> types;
   std::vector<bool> exclusive;
@@ -395,16 +402,20 @@ class Translator {
       ++pos_;
       auto n = std::make_unique<Node>();
       n->kind = Node::Exist;
+      std::vector<Token> vars;
       while (true) {
         const Token& v = next();
         if (v.kind != Token::Ident || !std::islower(static_cast<unsigned char>(v.text[0])))
           fail(v, "expected a lowercase variable after EXIST, found " + describe(v));
         check_name(v, "variable");
         n->args.push_back(v.text);
+        vars.push_back(v);
         if (sym(",")) { ++pos_; continue; }
         break;
       }
       n->a = iff();
+      for (const Token& v : vars)
+        if (!occurs(*n->a, v.text)) fail(v, "EXIST variable '" + v.text + "' does not occur in the formula it quantifies");
       return n;
     }
     if (t.kind != Token::Ident) fail(t, "expected an atom, '!', '(' or EXIST, found " + describe(t));
