@@ -57,6 +57,10 @@ SignalGuard::SignalGuard(bool clear) : saved_(std::make_unique<Saved>()) {
 
 SignalGuard::~SignalGuard() {
   g_forward.store(0);
+  // A signal was received: the process is on its way out with 128 + signal and complete
+  // outputs. The handlers stay, so a further signal (Ctrl-C pressed again, timeout's second
+  // signal) cannot kill it while it finishes (buffers, exit handlers, a sanitizer's leak check).
+  if (cancel_requested()) return;
   for (std::size_t i = 0; i < kSignals.size(); ++i) {
     if (saved_->installed[i]) ::sigaction(kSignals[i], &saved_->old[i], nullptr);
   }

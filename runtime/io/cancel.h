@@ -79,7 +79,8 @@ class CancelShield {
 
 // Installs the cancelling handler for SIGINT, SIGTERM and SIGHUP (SA_RESTART, no
 // SA_RESETHAND: every further signal only sets the flag again) and, if `clear`, clears the
-// request; the destructor restores the previous handlers. Guards nest (innermost wins).
+// request; the destructor restores the previous handlers, unless a signal was received
+// (then the process is ending: further signals must not kill it). Guards nest.
 class SignalGuard {
  public:
   explicit SignalGuard(bool clear = true);
