@@ -128,6 +128,7 @@ class Translator {
     int line_no = 0;
     while (std::getline(in, line)) {
       ++line_no;
+      line_no_ = line_no;
       if (!line.empty() && line.back() == '\r') line.pop_back();
       try {
         statement(line);
@@ -294,10 +295,14 @@ class Translator {
       per_formula_rule(*f, weight.empty() ? "0" : weight, start);
       return;
     }
+    // Alchemy allows a formula twice (two factors, i.e. their weights add); ksm names an
+    // unnamed rule from its formula, so the repeat gets a name of its own.
+    const std::string text = print(*f, true);
+    if (!formulas_.insert(text).second) rules_ << "@mln_line" << line_no_ << " ";
     if (hard) rules_ << "hard ";
     else if (weight.empty()) rules_ << "w 0: ";  // Alchemy: weight to be learned
     else rules_ << "w " << weight << ": ";
-    rules_ << print(*f, true) << ".";
+    rules_ << text << ".";
     if (!hard && weight.empty()) rules_ << "  // no weight in the .mln: to be learned";
     rules_ << "\n";
   }
@@ -508,6 +513,8 @@ class Translator {
   std::vector<std::string> errors_;
   bool per_formula_ = false;
   int aux_count_ = 0;
+  int line_no_ = 0;
+  std::set<std::string> formulas_;  // the rules written so far, as printed
 };
 
 }  // namespace

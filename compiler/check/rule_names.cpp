@@ -46,7 +46,7 @@ std::uint32_t fnv1a(std::string_view text) {
   return h;
 }
 
-std::string rule_name(const ast::Rule& r) {
+std::string rule_name(const ast::Rule& r, bool long_hash) {
   if (r.label) return r.label->name;
   std::vector<std::string> preds;
   if (r.exactly_one) {
@@ -64,8 +64,9 @@ std::string rule_name(const ast::Rule& r) {
   }
   if (name.empty()) name = "rule";
   const std::uint32_t h = fnv1a(normalized_rule_text(r));
-  char hex[8];
-  std::snprintf(hex, sizeof hex, "%04x", static_cast<unsigned>((h ^ (h >> 16)) & 0xffffu));
+  char hex[12];
+  if (long_hash) std::snprintf(hex, sizeof hex, "%08x", static_cast<unsigned>(h));
+  else std::snprintf(hex, sizeof hex, "%04x", static_cast<unsigned>((h ^ (h >> 16)) & 0xffffu));
   return name + "_" + hex;
 }
 

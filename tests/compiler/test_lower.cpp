@@ -127,3 +127,14 @@ TEST_CASE("a duplicate rule name is an error at the second rule") {
   CHECK_FALSE(m.ok);
   CHECK(m.diagnostics.find("name one with '@name'") != std::string::npos);
 }
+
+TEST_CASE("two different formulas whose short names collide both take the 8-digit hash") {
+  // FNV-1a of "a(v149)" and of "a(v276)" fold to the same 16 bits (9d86).
+  auto l = lower_text(std::string(kHeader) + "w 1: a(v149).\nw 1: a(v276).\nw 1: a(v3).\n");
+  INFO(l.diagnostics);
+  REQUIRE(l.ok);
+  REQUIRE(l.ir.rules.size() == 3);
+  CHECK(l.ir.rules[0].name == "a_c37b5efd");
+  CHECK(l.ir.rules[1].name == "a_5a5ac7dc");
+  CHECK(l.ir.rules[2].name.size() == std::string("a_").size() + 4);  // no collision: short
+}
