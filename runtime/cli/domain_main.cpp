@@ -19,6 +19,7 @@
 #include "runtime/cli/interrupt.h"
 #include "runtime/cli/progress.h"
 #include "runtime/cli/run_outputs.h"
+#include "runtime/cli/stage_log.h"
 #include "runtime/cli/work_estimate.h"
 #include "runtime/domain/config_error.h"
 #include "runtime/io/atomic_file.h"
@@ -288,7 +289,9 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
     return failure(io, spec, e.what());
   }
 
+  StageLog stages(spec.name, io.err, cf.quiet);  // phase lines of large runs (stage_log.h)
   DomainInput input;
+  input.stages = &stages;
   for (const auto& p : cf.inputs) input.inputs.emplace_back(p);
   input.flags = domain_flags;
   input.seed = counts.seed;
@@ -342,6 +345,8 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
   if (!cf.quiet) cfg.progress = [&printer](const mcmc::Progress& p) { printer(p); };
 
   cfg.cancel = &InterruptGuard::flag();
+  stages(fmt::format("building the model{} and sampling {} iterations", cfg.chains > 1 ? " of each chain" : "",
+                     cfg.iterations));
   mcmc::RunResult result;
   try {
     result = engine->run(cfg);
@@ -358,6 +363,7 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
     info.interrupted = InterruptGuard::signal_name();
   }
 
+  stages("writing the outputs");
   info.domain_name = spec.name;
   info.domain_version = spec.version;
   info.config = cfg;

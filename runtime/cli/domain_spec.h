@@ -29,6 +29,8 @@
 
 namespace ksmc::runtime::cli {
 
+class StageLog;  // stage_log.h
+
 // A command-line mistake: reported with the usage hint, exit code 2.
 class UsageError : public std::runtime_error {
  public:
@@ -76,7 +78,12 @@ struct DomainInput {
   std::uint64_t max_memory_mb = kDefaultMaxMemoryMb;  // --max-memory-mb: kits refuse estimates above it
   bool quiet = false;              // --quiet: no estimate line, no progress
   std::filesystem::path out_dir;
+  StageLog* stages = nullptr;      // the driver's; check_work enables it for large inputs
 };
+
+// A kit enters a phase of its preparation (reading, front end, model construction): one
+// progress line for large inputs (stage_log.h), nothing otherwise.
+void stage(const DomainInput& in, std::string_view what);
 
 // The output folder of a run, written as a whole (runtime/io/staged_dir.h): files go into
 // a staging folder beside the target (dir()), and commit() renames it into place, so the

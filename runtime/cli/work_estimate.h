@@ -30,6 +30,8 @@ struct WorkEstimate {
 // Estimates at or above these are printed (smaller runs stay quiet).
 inline constexpr double kAnnounceSeconds = 30.0;
 inline constexpr double kAnnounceMemoryMb = 1024.0;
+// Runs estimated at this or longer print their stage lines (stage_log.h).
+inline constexpr double kStageSeconds = 10.0;
 
 // "about 3.5 GB" / "about 240 MB"; "about 13 min" / "about 40 s" / "about 2.1 h".
 std::string format_memory(double mb);
@@ -37,10 +39,11 @@ std::string format_duration(double seconds);
 
 // Throws std::runtime_error (exit 1) when e.memory_mb > max_memory_mb; otherwise prints
 // "<input>: <what>: about <time> and <memory> (estimate; --quiet hides this)" to `err`
-// when the estimate is large and `quiet` is false.
-void check_work(const WorkEstimate& e, std::uint64_t max_memory_mb, bool quiet, std::ostream& err);
+// when the estimate is large and `quiet` is false. Returns whether it is large.
+bool check_work(const WorkEstimate& e, std::uint64_t max_memory_mb, bool quiet, std::ostream& err);
 
-// The same with the limit, --quiet and stderr of a domain run.
+// The same with the limit, --quiet and stderr of a domain run; an estimate of kStageSeconds
+// or a large one also turns on the run's stage lines (stage_log.h).
 void check_work(const WorkEstimate& e, const DomainInput& in);
 
 }  // namespace ksmc::runtime::cli

@@ -157,6 +157,17 @@ random.seed(1)
 print('ply\nformat ascii 1.0\nelement vertex 20000\nproperty float x\nproperty float y\nproperty float z\nend_header')
 for i in range(20000): print(random.random(), random.random(), random.random())" > cloud20k.ply
       expect "tabletop cloud above --max-memory-mb" 1 "cloud20k.ply: a cloud of 20000 points needs about" none tc -- "$tabletop" --cloud cloud20k.ply --max-memory-mb 40 --out tc
+      # SIGINT 2 s into the clustering of a dense cloud (100,000 points in a 6 cm box above a
+      # table: about 5 s of radius searches): exit 130 within 3 s, the previous folder intact.
+      python3 -c "
+import random
+random.seed(3)
+print('ply\nformat ascii 1.0\nelement vertex 150000\nproperty float x\nproperty float y\nproperty float z\nend_header')
+for i in range(50000): print('%.4f %.4f %.4f' % (random.uniform(-0.5, 0.5), random.uniform(-0.5, 0.5), random.gauss(0, 0.001)))
+for i in range(100000): print('%.4f %.4f %.4f' % (random.uniform(-0.03, 0.03), random.uniform(-0.03, 0.03), random.uniform(0.02, 0.08)))" > dense.ply
+      "$tabletop" scene.json --iterations 20 --quiet --out tdense >/dev/null 2>&1
+      expect "tabletop SIGINT while clustering a cloud" 130 "interrupted by SIGINT before a state existed" intact tdense -- \
+        timeout -s KILL 5 timeout --foreground --preserve-status -s INT 2 "$tabletop" --cloud dense.ply --out tdense
     fi
   else
     skip "tabletop cases" "no $tabletop (kit not built)"

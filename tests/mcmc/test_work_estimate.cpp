@@ -1,10 +1,13 @@
-// runtime/cli/work_estimate: the up-front line for large inputs and the --max-memory-mb refusal.
+// runtime/cli/work_estimate: the up-front line for large inputs and the --max-memory-mb refusal;
+// runtime/cli/stage_log: the phase lines it turns on.
 #include <catch2/catch.hpp>
 
 #include <sstream>
 #include <stdexcept>
 #include <string>
 
+#include "runtime/cli/domain_spec.h"
+#include "runtime/cli/stage_log.h"
 #include "runtime/cli/work_estimate.h"
 
 using namespace ksmc::runtime::cli;
@@ -40,4 +43,31 @@ TEST_CASE("work estimates: small runs are quiet, large ones say their cost, too 
           "run anyway)");
   }
   CHECK_NOTHROW(check_work(huge, 16000, true, quiet));
+}
+
+TEST_CASE("stage lines: only runs estimated at 10 s or more print them, never under --quiet", "[cli][work_estimate]") {
+  std::ostringstream err;
+  StageLog stages("indoor", err, false);
+  DomainInput in;
+  in.stages = &stages;
+  stage(in, "before any estimate");
+  check_work(WorkEstimate{"small.pgm", "a 600 x 400 map", 84, 2}, in);
+  stage(in, "after a small estimate");
+  CHECK(err.str().empty());
+  check_work(WorkEstimate{"mid.pgm", "a 3600 x 2400 map", 400, 12}, in);  // 12 s: no estimate line, stages on
+  stage(in, "classifying solid interiors");
+  const std::string out = err.str();
+  CHECK(out.rfind("indoor: ", 0) == 0);
+  CHECK(out.find(" s: classifying solid interiors\n") != std::string::npos);
+  CHECK(out.find("after a small") == std::string::npos);
+
+  std::ostringstream quiet_err;
+  StageLog quiet("indoor", quiet_err, true);
+  DomainInput q;
+  q.stages = &quiet;
+  q.quiet = true;
+  check_work(WorkEstimate{"big.pgm", "a 10000 x 10000 map", 3875, 840}, q);
+  stage(q, "classifying solid interiors");
+  CHECK_FALSE(quiet.enabled());
+  CHECK(quiet_err.str().empty());
 }

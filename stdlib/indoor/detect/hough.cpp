@@ -1,11 +1,13 @@
 #include "stdlib/indoor/detect/hough.h"
 
+#include <algorithm>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 
 #include <opencv2/imgproc.hpp>
 
+#include "runtime/io/cancel.h"
 #include "stdlib/indoor/cell.h"
 
 namespace ksmc::stdlib::indoor::detect {
@@ -16,11 +18,21 @@ std::vector<Segment> hough_segments(const cv::Mat1b& mask, const HoughParams& pa
     throw std::invalid_argument("hough_segments: rho, theta_deg and threshold must be positive");
   std::vector<Segment> out;
   if (mask.empty()) return out;
+  // A mask of more than kBandRows rows (a very large map) is transformed in bands of that
+  // many rows, and a cancel request is seen between them: one OpenCV call on a 10800 x 9600
+  // map takes 10 s that SIGINT cannot interrupt. A wall crossing a band border becomes two
+  // segments of its angle and nearly its length, which the length-weighted orientation
+  // histogram does not tell apart. Smaller masks (every benchmark map) go whole, as before.
+  constexpr int kBandRows = 2048;
   std::vector<cv::Vec4i> lines;
-  cv::HoughLinesP(mask, lines, params.rho, params.theta_deg * std::numbers::pi / 180.0, params.threshold,
-                  params.min_length, params.max_gap);
-  out.reserve(lines.size());
-  for (const auto& l : lines) out.push_back({{double(l[0]), double(l[1])}, {double(l[2]), double(l[3])}});
+  for (int r0 = 0; r0 < mask.rows; r0 += kBandRows) {
+    const int r1 = std::min(mask.rows, r0 + kBandRows);
+    if (r0 > 0) runtime::io::throw_if_cancelled("the Hough transform of the map");
+    lines.clear();
+    cv::HoughLinesP(mask.rowRange(r0, r1), lines, params.rho, params.theta_deg * std::numbers::pi / 180.0,
+                    params.threshold, params.min_length, params.max_gap);
+    for (const auto& l : lines) out.push_back({{double(l[0]), double(l[1] + r0)}, {double(l[2]), double(l[3] + r0)}});
+  }
   return out;
 }
 

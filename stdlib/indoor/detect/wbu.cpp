@@ -8,6 +8,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "runtime/io/cancel.h"
 #include "stdlib/indoor/detect/frame.h"
 
 namespace ksmc::stdlib::indoor::detect {
@@ -125,6 +126,7 @@ FrameOutput run_frame(const cv::Mat1b& fgrid, const std::vector<Segment>& segmen
   const std::size_t soft_cap = std::max<std::size_t>(4 * p.max_candidates, 1024);
   std::vector<std::size_t> valid;
   for (std::size_t k = 0; k < nh; ++k) {
+    runtime::io::throw_if_cancelled("the wall-bounded unit candidates");  // a very large map: seconds per frame
     for (std::size_t l = k + 1; l < nh; ++l) {
       const int y0 = out.hlines[k].coord, y1 = out.hlines[l].coord;
       const int dy = y1 - y0;

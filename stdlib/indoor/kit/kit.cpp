@@ -253,6 +253,7 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
   const double res = map->resolution;
   const double solid_depth = in.flags.real("solid-depth");
   if (!(solid_depth >= 0.0) || !std::isfinite(solid_depth)) throw cli::UsageError("--solid-depth must be >= 0 metres");
+  cli::stage(in, "classifying solid interiors");
   const std::size_t solid_cells = unexplain_solid_interior(map->grid, solid_depth / res);
   runtime::io::throw_if_cancelled("indoor: after the solid interior");
   shared->grid = map->grid;
@@ -260,6 +261,7 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
   shared->seed = in.seed;
   shared->tuning.source_refresh = flag_count(in.flags, "source-refresh");
 
+  cli::stage(in, "finding wall orientations and unit candidates");
   FixedSources fixed = fixed_sources(plan, *map, in);
   runtime::io::throw_if_cancelled("indoor: after the fixed sources");
   shared->fixed_units = std::move(fixed.units);
@@ -269,6 +271,7 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
   shared->kernel.min_size = std::max(3.0, 0.3 / res);
   shared->kernel.orientation.enabled = true;
   shared->kernel.orientation.dominant = fixed.frame_deg * kPiD / 180.0;
+  cli::stage(in, "indexing the map evidence");
   shared->evidence = std::make_unique<MapEvidence>(map->grid, 1);
 
   cli::DomainSetup setup;

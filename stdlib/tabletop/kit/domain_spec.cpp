@@ -83,6 +83,7 @@ Scene load_cloud_input(const cli::DomainInput& in, std::string& scene_json) {
   const std::string file = in.flags.text("cloud");
   const perception::Points points = perception::load_cloud(file, options.units);
   cli::check_work(cloud_estimate(file, points.size(), in), in);  // large clouds: cost up front
+  options.stage = [&in](std::string_view what) { cli::stage(in, what); };
   perception::CloudScene cs = perception::scene_from_points(points, file, options);
   scene_json = perception::scene_json_text(cs.scene);
   return std::move(cs.scene);
@@ -237,6 +238,7 @@ cli::DomainSpec domain_spec(const blocks::Binding& binding) {
     const std::string left = pair.substr(0, pair.find(' '));
     // (The cloud front end checked its estimate before reading the points.)
     if (!cloud) cli::check_work(scene_estimate(stereo ? left : in.inputs.at(0).string(), scene->objects.size(), in), in);
+    cli::stage(in, fmt::format("preparing the model of {} objects", scene->objects.size()));
     KitSetup k = make_setup(*b, scene);
     if (!scene->image.empty()) k.setup.extra_inputs.push_back(scene->image);
     if (stereo) {

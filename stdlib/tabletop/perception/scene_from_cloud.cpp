@@ -2,15 +2,23 @@
 
 #include <fmt/format.h>
 
+#include "runtime/io/cancel.h"
+
 namespace ksmc::stdlib::tabletop::perception {
 
 CloudScene scene_from_points(const Points& cloud, const std::string& source, const CloudOptions& options) {
   if (cloud.empty()) throw CloudError(fmt::format("{}: empty cloud: no points", source));
+  const auto stage = [&options](std::string_view what) {
+    runtime::io::throw_if_cancelled(what);
+    if (options.stage) options.stage(what);
+  };
   CloudScene out;
   out.cloud_points = cloud.size();
+  stage(fmt::format("finding the table plane in {} points (RANSAC)", cloud.size()));
   out.table = fit_table(cloud, source, options.table);
   out.cloud_in_table = to_table_frame(cloud, out.table.table_in_cloud);
   out.sensor_in_table = out.table.table_in_cloud.inverse().t;
+  stage("clustering the points above the table");
   out.object_points = cluster_objects(out.cloud_in_table, out.table.extent, options.clusters);
   if (out.object_points.empty())
     throw CloudError(fmt::format("{}: no object above the table ({} table points, none of the other {} points "
@@ -25,6 +33,7 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
   s.table.size = Eigen::Vector3d(out.table.extent.x(), out.table.extent.y(), options.table_thickness);
   std::vector<Points> clusters = std::move(out.object_points);
   out.object_points.clear();
+  stage(fmt::format("fitting boxes to {} clusters", clusters.size()));
   for (std::size_t c = 0; c < clusters.size(); ++c) {
     const std::vector<UprightBox> boxes = options.split_stacks ? fit_stacked_boxes(clusters[c], options.box, options.stacks)
                                                                : std::vector<UprightBox>{fit_upright_box(clusters[c], options.box)};

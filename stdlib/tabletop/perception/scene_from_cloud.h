@@ -5,7 +5,9 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "stdlib/tabletop/perception/box_fit.h"
@@ -27,6 +29,9 @@ struct CloudOptions {
   Camera camera{615.0, 615.0, 320.0, 240.0, 640, 480};  // written to scene.json (overlay)
   double table_thickness = 0.05;                        // m, the slab below z = 0
   std::string id_prefix = "obj_";
+  // Called as each phase starts, with its name (the run's progress lines of large clouds,
+  // runtime/cli/stage_log.h); may be empty.
+  std::function<void(std::string_view)> stage;
 };
 
 struct CloudScene {
