@@ -12,23 +12,13 @@
 
 #include "synthetic_cloud.h"
 #include "tests/support/shared_data.h"
+#include "tests/support/tabletop_run.h"
 
 namespace fs = std::filesystem;
 namespace tp = ksmc::tests::perception;
 
-namespace {
-
-int run(const std::string& args, const fs::path& log) {
-  const std::string cmd = std::string(KSMC_TABLETOP_EXE) + " " + args + " > " + log.string() + " 2>&1";
-  return std::system(cmd.c_str());
-}
-
-nlohmann::json read_json(const fs::path& p) {
-  std::ifstream in(p);
-  return nlohmann::json::parse(in);
-}
-
-}  // namespace
+using ksmc::tests::read_json;
+using ksmc::tests::run_tabletop;
 
 TEST_CASE("tabletop --cloud: two boxes on a table, in millimetres", "[perception][cli]") {
   const fs::path dir = fs::temp_directory_path() / "ksmc_perception_cli";
@@ -42,9 +32,9 @@ TEST_CASE("tabletop --cloud: two boxes on a table, in millimetres", "[perception
   for (const auto& p : tp::to_sensor(pts, tp::example_sensor_pose())) mm.push_back(1000.0 * p);
   tp::pc::save_ply(dir / "frame.ply", mm);
 
-  REQUIRE(run("--cloud " + (dir / "frame.ply").string() + " --cloud-units mm --out " + (dir / "out").string() +
-                  " --iterations 200",
-              dir / "log.txt") == 0);
+  REQUIRE(run_tabletop("--cloud " + (dir / "frame.ply").string() + " --cloud-units mm --out " + (dir / "out").string() +
+                           " --iterations 200",
+                       dir / "log.txt") == 0);
   const auto scene = read_json(dir / "out" / "scene.json");
   CHECK(scene["objects"].size() == 2);
   const auto graph = read_json(dir / "out" / "scene_graph.json");
@@ -63,12 +53,13 @@ TEST_CASE("tabletop --cloud: two boxes on a table, in millimetres", "[perception
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (int i = 0; i < 3000; ++i) cube.emplace_back(u(rng), u(rng), u(rng));
   tp::pc::save_ply(dir / "cube.ply", cube);
-  CHECK(run("--cloud " + (dir / "cube.ply").string() + " --out " + (dir / "bad").string(), dir / "bad.txt") != 0);
+  CHECK(run_tabletop("--cloud " + (dir / "cube.ply").string() + " --out " + (dir / "bad").string(), dir / "bad.txt") !=
+        0);
   std::ifstream err(dir / "bad.txt");
   const std::string text((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
   CHECK(text.find((dir / "cube.ply").string() + ": no table plane") != std::string::npos);
-  CHECK(run("x.json --cloud " + (dir / "frame.ply").string() + " --out " + (dir / "bad2").string(), dir / "bad2.txt") !=
-        0);
+  CHECK(run_tabletop("x.json --cloud " + (dir / "frame.ply").string() + " --out " + (dir / "bad2").string(),
+                     dir / "bad2.txt") != 0);
 }
 
 TEST_CASE("tabletop --cloud on the HOPE cloud: every box on the table, none false or hidden", "[perception][cli][hope]") {
@@ -76,9 +67,9 @@ TEST_CASE("tabletop --cloud on the HOPE cloud: every box on the table, none fals
   if (!ksmc::tests::have_shared(cloud)) return;
   const fs::path dir = fs::temp_directory_path() / "ksmc_perception_cli_hope";
   fs::remove_all(dir);
-  REQUIRE(run("--cloud " + (ksmc::tests::shared_dir() / cloud).string() + " --cloud-units cm --out " + dir.string() +
-                  " --iterations 300",
-              fs::temp_directory_path() / "ksmc_perception_cli_hope.txt") == 0);
+  REQUIRE(run_tabletop("--cloud " + (ksmc::tests::shared_dir() / cloud).string() + " --cloud-units cm --out " +
+                           dir.string() + " --iterations 300",
+                       fs::temp_directory_path() / "ksmc_perception_cli_hope.txt") == 0);
   const auto graph = read_json(dir / "scene_graph.json");
   CHECK(graph["objects"].size() == 9);
   for (const auto& o : graph["objects"]) {

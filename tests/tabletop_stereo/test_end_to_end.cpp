@@ -18,23 +18,16 @@
 #include "stdlib/tabletop/perception/cloud_io.h"
 #include "stdlib/tabletop/sim/depth_render.h"
 #include "stereo_scenes.h"
+#include "tests/support/tabletop_run.h"
 
 namespace fs = std::filesystem;
 namespace ts = ksmc::tests::stereo;
 namespace sim = ksmc::stdlib::tabletop::sim;
 namespace pc = ksmc::stdlib::tabletop::perception;
+using ksmc::tests::read_json;
+using ksmc::tests::run_tabletop;
 
 namespace {
-
-int run(const std::string& args, const fs::path& log) {
-  const std::string cmd = std::string(KSMC_TABLETOP_EXE) + " " + args + " > " + log.string() + " 2>&1";
-  return std::system(cmd.c_str());
-}
-
-nlohmann::json read_json(const fs::path& p) {
-  std::ifstream in(p);
-  return nlohmann::json::parse(in);
-}
 
 struct Decision {
   bool stable = false, is_false = false, hidden = false;
@@ -80,10 +73,10 @@ TEST_CASE("end to end: stereo -> scene graph (stack, hidden supporter, printed p
   for (const std::string yaml : {"stereo.yaml", "no_table.yaml"}) {
     INFO(yaml);
     const fs::path out = dir / ("out_" + yaml);
-    REQUIRE(run("--stereo " + (dir / "left.png").string() + " " + (dir / "right.png").string() + " --calib " +
-                    (dir / yaml).string() + " --db " + (dir / "db").string() + " --out " + out.string() +
-                    " --iterations 400 --seed 3",
-                dir / "log.txt") == 0);
+    REQUIRE(run_tabletop("--stereo " + (dir / "left.png").string() + " " + (dir / "right.png").string() + " --calib " +
+                             (dir / yaml).string() + " --db " + (dir / "db").string() + " --out " + out.string() +
+                             " --iterations 400 --seed 3",
+                         dir / "log.txt") == 0);
     const auto written = read_json(out / "scene.json");
     for (const auto& o : written["objects"]) CHECK(o["keypoints"]["model"].size() >= 6);
     const auto d = decisions(read_json(out / "scene_graph.json"));
@@ -136,8 +129,9 @@ TEST_CASE("end to end: cloud -> scene graph (stack, absorbing supporter, multipa
   }
   CHECK(ghost > 100);
   pc::save_ply(dir / "frame.ply", cloud);
-  REQUIRE(run("--cloud " + (dir / "frame.ply").string() + " --out " + (dir / "out").string() + " --iterations 400 --seed 3",
-              dir / "log.txt") == 0);
+  REQUIRE(run_tabletop("--cloud " + (dir / "frame.ply").string() + " --out " + (dir / "out").string() +
+                           " --iterations 400 --seed 3",
+                       dir / "log.txt") == 0);
   const auto written = read_json(dir / "out" / "scene.json");
   const auto d = decisions(read_json(dir / "out" / "scene_graph.json"));
   // Name the cloud's boxes after the nearest true box (camera frame), the ghost after none.

@@ -1,7 +1,7 @@
 // ksmc-scenegen-families: writes the scenes of one noise-model family (or all of them).
 //   ksmc-scenegen-families --family NAME|all --seed N --count K --out DIR
 // writes DIR/<family>/scene_000.json + scene_000.truth.json, ... and one summary line per family.
-#include <charconv>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -12,28 +12,18 @@
 #include <fmt/format.h>
 
 #include "stdlib/tabletop/sim/scene_writer.h"
+#include "stdlib/tabletop/sim/scenegen_flags.h"
 #include "tools/tabletop_families/families.h"
 
 namespace tf = ksmc::tools::tabletop_families;
 namespace sim = ksmc::stdlib::tabletop::sim;
+using sim::UsageError;
 
 namespace {
 
 constexpr const char* kUsage =
     "usage: ksmc-scenegen-families --family NAME|all --seed N --count K --out DIR\n"
     "  --list   print the families and what each varies\n";
-
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-std::uint64_t parse_count(std::string_view flag, std::string_view text) {
-  std::uint64_t v = 0;
-  const auto* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, v);
-  if (ec != std::errc() || ptr != end) throw UsageError(fmt::format("{}: '{}' is not a valid number", flag, text));
-  return v;
-}
 
 }  // namespace
 
@@ -43,25 +33,20 @@ int main(int argc, char** argv) {
     std::uint64_t seed = 0, count = 0;
     bool have_seed = false;
     std::filesystem::path out;
-    const std::vector<std::string_view> args(argv + 1, argv + argc);
-    for (std::size_t i = 0; i < args.size(); ++i) {
-      const std::string_view flag = args[i];
-      if (flag == "--help" || flag == "-h") {
-        std::fputs(kUsage, stdout);
-        return 0;
-      }
-      if (flag == "--list") {
-        for (const auto& f : tf::families()) fmt::print("{:<12} {}\n", f.name, f.varies);
-        return 0;
-      }
-      if (i + 1 >= args.size()) throw UsageError(fmt::format("{}: missing value", flag));
-      const std::string_view value = args[++i];
+    const auto on_switch = [](std::string_view flag) {
+      if (flag != "--list") return sim::Switch::no;
+      for (const auto& f : tf::families()) fmt::print("{:<12} {}\n", f.name, f.varies);
+      return sim::Switch::stop;
+    };
+    const auto on_value = [&](std::string_view flag, std::string_view value) {
       if (flag == "--family") family = value;
-      else if (flag == "--seed") seed = parse_count(flag, value), have_seed = true;
-      else if (flag == "--count") count = parse_count(flag, value);
+      else if (flag == "--seed") seed = sim::parse_number<std::uint64_t>(flag, value), have_seed = true;
+      else if (flag == "--count") count = sim::parse_number<std::uint64_t>(flag, value);
       else if (flag == "--out") out = std::string(value);
-      else throw UsageError(fmt::format("unknown option '{}'", flag));
-    }
+      else return false;
+      return true;
+    };
+    if (!sim::read_flags(argc, argv, kUsage, on_switch, on_value)) return 0;
     if (family.empty() || !have_seed || count == 0 || out.empty())
       throw UsageError("--family, --seed, --count (>= 1) and --out are required");
     std::vector<const tf::Family*> chosen;

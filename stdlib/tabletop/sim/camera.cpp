@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "stdlib/tabletop/camera_geometry.h"
+
 namespace ksmc::stdlib::tabletop::sim {
 
 Pose draw_camera_pose(Rng& rng, const CameraPlacement& placement) {
@@ -15,16 +17,9 @@ Pose draw_camera_pose(Rng& rng, const CameraPlacement& placement) {
   const Eigen::Vector3d centre =
       target + distance * Eigen::Vector3d(std::cos(elevation) * std::cos(azimuth),
                                           std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
-  const Eigen::Vector3d z = (target - centre).normalized();
-  const Eigen::Vector3d x = z.cross(Eigen::Vector3d::UnitZ()).normalized();
-  const Eigen::Vector3d y = z.cross(x);
-  Eigen::Matrix3d r;
-  r.col(0) = x;
-  r.col(1) = y;
-  r.col(2) = z;
   Pose p;
   p.t = centre;
-  p.q = Eigen::Quaterniond(r).normalized();
+  p.q = look_along(target - centre);
   return p;
 }
 

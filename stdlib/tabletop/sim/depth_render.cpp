@@ -3,26 +3,15 @@
 #include <cmath>
 #include <limits>
 
+#include "stdlib/tabletop/camera_geometry.h"
+
 namespace ksmc::stdlib::tabletop::sim {
 
 double ray_box(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir, const Box& box) {
   const Eigen::Matrix3d r = box.pose.rotation();
   const Eigen::Vector3d o = r.transpose() * (origin - box.pose.t);
   const Eigen::Vector3d d = r.transpose() * dir;
-  const Eigen::Vector3d h = 0.5 * box.size;
-  double enter = -std::numeric_limits<double>::infinity(), leave = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < 3; ++k) {
-    if (std::abs(d[k]) < 1e-15) {
-      if (std::abs(o[k]) > h[k]) return -1.0;
-      continue;
-    }
-    double s0 = (-h[k] - o[k]) / d[k], s1 = (h[k] - o[k]) / d[k];
-    if (s0 > s1) std::swap(s0, s1);
-    enter = std::max(enter, s0);
-    leave = std::min(leave, s1);
-  }
-  if (enter > leave || leave <= 0.0) return -1.0;
-  return enter > 0.0 ? enter : -1.0;  // origin inside a box: no visible surface
+  return ray_enter_box(o, d, 0.5 * box.size);  // -1 also when the origin is inside the box
 }
 
 std::vector<Eigen::Vector3d> render_depth(Rng& rng, const Camera& camera, const Pose& table_from_camera,

@@ -2,7 +2,6 @@
 //   ksmc-scenegen --seed N --count K --out DIR [--objects MIN..MAX] [--hidden-rate r] [--false-rate r]
 // writes DIR/scene_000.json + scene_000.truth.json, ... and prints one summary line.
 #include <algorithm>
-#include <charconv>
 #include <cstdint>
 #include <cstdio>
 #include <exception>
@@ -15,8 +14,11 @@
 #include <fmt/format.h>
 
 #include "stdlib/tabletop/sim/scene_writer.h"
+#include "stdlib/tabletop/sim/scenegen_flags.h"
 
 namespace sim = ksmc::stdlib::tabletop::sim;
+using sim::parse_number;
+using sim::UsageError;
 
 namespace {
 
@@ -34,21 +36,6 @@ constexpr const char* kUsage =
     "  --outlier-rate r    fraction of keypoints displaced by 10-50 px (default 0.05)\n"
     "  --verbose           one line per scene\n";
 
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-template <typename T>
-T parse_number(std::string_view flag, std::string_view text) {
-  T value{};
-  const auto* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  if (ec != std::errc() || ptr != end) {
-    throw UsageError(fmt::format("{}: '{}' is not a valid number", flag, text));
-  }
-  return value;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -60,19 +47,12 @@ int main(int argc, char** argv) {
     std::filesystem::path out;
     sim::GeneratorOptions options;
 
-    const std::vector<std::string_view> args(argv + 1, argv + argc);
-    for (std::size_t i = 0; i < args.size(); ++i) {
-      const std::string_view flag = args[i];
-      if (flag == "--help" || flag == "-h") {
-        std::fputs(kUsage, stdout);
-        return 0;
-      }
-      if (flag == "--verbose") {
-        verbose = true;
-        continue;
-      }
-      if (i + 1 >= args.size()) throw UsageError(fmt::format("{}: missing value", flag));
-      const std::string_view value = args[++i];
+    const auto on_switch = [&](std::string_view flag) {
+      if (flag != "--verbose") return sim::Switch::no;
+      verbose = true;
+      return sim::Switch::taken;
+    };
+    const auto on_value = [&](std::string_view flag, std::string_view value) {
       if (flag == "--seed") {
         seed = parse_number<std::uint64_t>(flag, value);
         have_seed = true;
@@ -99,9 +79,11 @@ int main(int argc, char** argv) {
       } else if (flag == "--outlier-rate") {
         options.keypoints.outlier_rate = parse_number<double>(flag, value);
       } else {
-        throw UsageError(fmt::format("unknown option '{}'", flag));
+        return false;
       }
-    }
+      return true;
+    };
+    if (!sim::read_flags(argc, argv, kUsage, on_switch, on_value)) return 0;
     if (!have_seed) throw UsageError("--seed is required");
     if (count < 0) throw UsageError("--count is required");
     if (out.empty()) throw UsageError("--out is required");

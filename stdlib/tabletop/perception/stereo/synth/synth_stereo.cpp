@@ -8,6 +8,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "stdlib/tabletop/camera_geometry.h"
 #include "stdlib/tabletop/perception/stereo/object_db.h"
 
 namespace ksmc::stdlib::tabletop::perception::stereo::synth {
@@ -61,16 +62,9 @@ TexturedBox textured_box(const std::string& name, const Eigen::Vector3d& size, c
 Pose look_at_table(double distance, double elevation, double azimuth) {
   const Eigen::Vector3d eye(distance * std::cos(elevation) * std::sin(azimuth),
                             -distance * std::cos(elevation) * std::cos(azimuth), distance * std::sin(elevation));
-  const Eigen::Vector3d z = (-eye).normalized();
-  const Eigen::Vector3d x = z.cross(Eigen::Vector3d::UnitZ()).normalized();
-  const Eigen::Vector3d y = z.cross(x);
-  Eigen::Matrix3d r;
-  r.col(0) = x;
-  r.col(1) = y;
-  r.col(2) = z;
   Pose p;
   p.t = eye;
-  p.q = Eigen::Quaterniond(r).normalized();
+  p.q = look_along(-eye);
   return p;
 }
 
@@ -93,28 +87,6 @@ struct Prepared {
   Eigen::Vector3d t, half;
   std::array<cv::Mat, 6> faces;  // CV_32F, slightly blurred against aliasing
 };
-
-// Entry parameter of the ray into the box and the face it enters through; s < 0: none.
-double ray_enter(const Eigen::Vector3d& o, const Eigen::Vector3d& d, const Eigen::Vector3d& h, int& face) {
-  double enter = -std::numeric_limits<double>::infinity(), leave = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < 3; ++k) {
-    if (std::abs(d[k]) < 1e-15) {
-      if (std::abs(o[k]) > h[k]) return -1.0;
-      continue;
-    }
-    double s0 = (-h[k] - o[k]) / d[k], s1 = (h[k] - o[k]) / d[k];
-    const int f0 = 2 * k + 1, f1 = 2 * k;  // -h face = odd, +h face = even
-    const bool swap = s0 > s1;
-    if (swap) std::swap(s0, s1);
-    if (s0 > enter) {
-      enter = s0;
-      face = swap ? f1 : f0;
-    }
-    leave = std::min(leave, s1);
-  }
-  if (enter > leave || enter <= 0.0) return -1.0;
-  return enter;
-}
 
 float bilinear(const cv::Mat& t, double x, double y) {
   x = std::clamp(x, 0.0, t.cols - 1.0);
@@ -157,7 +129,7 @@ cv::Mat render_view(const Rig& rig, const Pose& table_from_cam, const std::vecto
             const Prepared& p = boxes[b];
             const Eigen::Vector3d o = p.r.transpose() * (eye - p.t), d = p.r.transpose() * dir;
             int face = 0;
-            const double s = ray_enter(o, d, p.half, face);
+            const double s = ray_enter_box(o, d, p.half, &face);
             if (s <= 0.0 || s >= best) continue;
             best = s;
             const FaceFrame ff = face_frame(face);
