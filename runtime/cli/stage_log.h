@@ -1,9 +1,9 @@
 // Progress of the phases around sampling for large inputs (issue 16): reading and
 // preparing the input, a perception front end, model construction, initial inference,
 // writing the outputs. The engine's progress line covers sampling; before and after it a
-// large run would otherwise sit silent for minutes. Once a kit's work estimate was large
-// enough to be printed (work_estimate.h), each phase a kit or the driver enters prints one
-// stderr line with the seconds since the run started:
+// large run would otherwise sit silent for minutes. Once a kit's work estimate (work_estimate.h)
+// reached kStageSeconds or was large enough to be printed, each phase a kit or the driver
+// enters prints one stderr line with the seconds since the run started:
 //   indoor: 4.1 s: finding wall orientations and unit candidates
 // Small runs and --quiet print nothing.
 #pragma once
