@@ -1,10 +1,12 @@
 #include "stdlib/tabletop/blocks.h"
 
 #include <algorithm>
+#include <vector>
 
 #include "stdlib/tabletop/extract_contact.h"
 #include "stdlib/tabletop/extract_higher.h"
 #include "stdlib/tabletop/extract_intersect.h"
+#include "stdlib/tabletop/extract_overhang.h"
 #include "stdlib/tabletop/extract_overlap.h"
 #include "stdlib/tabletop/extract_stable.h"
 
@@ -92,6 +94,19 @@ bool overlap(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, d
 
 bool flatter(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, double margin) {
   return extract_flatter(box_of(s, pose_a, size_a), box_of(s, pose_b, size_b), margin);
+}
+
+bool overhang(const Scene& s, std::int32_t o, double eps, double margin) {
+  if (s.is_table(o)) return false;
+  s.note_hover_tolerance(eps);  // touching_row then tracks the bodies this atom reads
+  std::vector<Obb> supporters;
+  for (std::size_t j = 0; j < s.bodies(); ++j) {
+    const auto b = static_cast<std::int32_t>(j);
+    if (b == o || !touching(s, o, b, eps) || !extract_higher(s.box(o), s.box(b), kDefaults)) continue;
+    if (s.is_table(b)) return false;  // resting on the table: nothing to overhang
+    supporters.push_back(s.box(b));
+  }
+  return extract_overhang(s.box(o), supporters, margin);
 }
 
 }  // namespace obb

@@ -76,6 +76,11 @@ bool hover(const Scene& s, std::int32_t o, double eps);
 bool overlap(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, double min_fraction);
 // a's tilt is smaller than b's by more than margin [rad] (extract_overlap.h).
 bool flatter(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, double margin);
+// Constant o rests on other boxes and not on the table (its supporters: the bodies it touches
+// in the sense of hover with tolerance eps and is `higher` than), and its centre lies beyond
+// their upward faces by more than margin [m] (extract_overhang.h). It reads the bodies o
+// touches, like hover: a move changes it only for bodies touching the moved one.
+bool overhang(const Scene& s, std::int32_t o, double eps, double margin);
 }  // namespace obb
 
 namespace scene {

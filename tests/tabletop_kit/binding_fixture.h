@@ -16,7 +16,7 @@ namespace blk = ksmc::stdlib::tabletop::blocks;
 namespace gen = ksmc_generated::tabletop;
 
 // domains/tabletop.ksm (10 deg, 4 mm, 5 mm, 4 mm; robust Gaussian, 5 px; overlap 0.5 of the
-// smaller box, flatter by 0.5 deg).
+// smaller box, flatter by 0.5 deg; overhang within 4 mm, beyond 5 mm).
 struct KsmValues {
   static constexpr double stable_tol = 0.17453292519943295;
   static constexpr double contact_eps = 0.004;
@@ -26,10 +26,12 @@ struct KsmValues {
   static constexpr double outlier_px = 5.0;
   static constexpr double overlap_fraction = 0.5;
   static constexpr double flatter_margin = 0.008726646259971648;
+  static constexpr double overhang_eps = 0.004;
+  static constexpr double overhang_margin = 0.005;
 };
 
 // A literal reading of the seed: 3 deg, 4 mm, 4 mm, plain Gaussian (sigma 1 px). The seed has
-// no overlap / flatter evidence; the domain file's values serve its rule r23.
+// no overlap / flatter / overhang evidence; the domain file's values serve its rules r23, r24.
 struct SeedValues {
   static constexpr double stable_tol = 0.05235987755982988;
   static constexpr double contact_eps = 0.004;
@@ -39,6 +41,8 @@ struct SeedValues {
   static constexpr double outlier_px = 20.0;
   static constexpr double overlap_fraction = KsmValues::overlap_fraction;
   static constexpr double flatter_margin = KsmValues::flatter_margin;
+  static constexpr double overhang_eps = KsmValues::overhang_eps;
+  static constexpr double overhang_margin = KsmValues::overhang_margin;
 };
 
 // The generated program's predicate named `name`, or -1.
@@ -70,6 +74,9 @@ struct Fixture {
   static bool flatter(const blk::Scene& s, const std::int32_t* c) {
     return blk::obb::flatter(s, s.se3(c[0]), s.vec3(c[0]), s.se3(c[1]), s.vec3(c[1]), V::flatter_margin);
   }
+  static bool overhang(const blk::Scene& s, const std::int32_t* c) {
+    return blk::obb::overhang(s, c[0], V::overhang_eps, V::overhang_margin);
+  }
   static bool table(const blk::Scene& s, const std::int32_t* c) { return blk::scene::is_table(s, c[0]); }
 
   static blk::Binding make(bool decisions = true) {
@@ -84,11 +91,13 @@ struct Fixture {
     b.extractors.push_back({gen::kPred_higher, &higher, "extract higher(a, b) = obb.higher(...)"});
     b.extractors.push_back({gen::kPred_hover, &hover, "extract hover(o) = obb.hover(o, ...)"});
     // By name: the learned copy of an older domain file (bench/tabletop/tabletop_learned.ksm,
-    // tabletop_family_eval_learned) declares neither.
+    // tabletop_family_eval_learned) declares none of them.
     if (const std::int32_t p = predicate_named("overlap"); p >= 0)
       b.extractors.push_back({p, &overlap, "extract overlap(a, b) = obb.overlap(...)"});
     if (const std::int32_t p = predicate_named("flatter"); p >= 0)
       b.extractors.push_back({p, &flatter, "extract flatter(a, b) = obb.flatter(...)"});
+    if (const std::int32_t p = predicate_named("overhang"); p >= 0)
+      b.extractors.push_back({p, &overhang, "extract overhang(o) = obb.overhang(o, ...)"});
     b.extractors.push_back({gen::kPred_table, &table, "extract table(o) = scene.is_table(o)"});
     b.priors.push_back(blk::mln());
     b.likelihood = blk::keypoints::gaussian(1.0, V::robust, V::outlier_px);

@@ -98,7 +98,7 @@ TEST_CASE("incremental evidence equals a fresh full extraction along a random wa
     const auto scene = example(name);
     kit::TabletopModel model(scene, ksm_binding());
     std::mt19937_64 rng(7);
-    int flips = 0, wider = 0;
+    int flips = 0, wider = 0, overhangs = 0;
     std::string last = evidence_of(model);
     for (int step = 0; step < 150; ++step) {
       const std::size_t i = rng() % model.scene().objects.size();
@@ -120,11 +120,13 @@ TEST_CASE("incremental evidence equals a fresh full extraction along a random wa
       REQUIRE(evidence_of(model) == evidence_of(*fresh_at(model)));
       const std::string now = evidence_of(model);
       if (now != last) ++flips;
+      overhangs += now.find("\noverhang(") != std::string::npos || now.rfind("overhang(", 0) == 0;
       last = now;
     }
     INFO(name);
     CHECK(flips > 10);  // the walk really changed relations
     CHECK(wider > 0);   // and hover atoms of other bodies with them
+    CHECK(overhangs > 0);  // overhang atoms, which read the bodies under a box, were true on the way
   }
 }
 
@@ -199,6 +201,8 @@ TEST_CASE("prior mln is the log-weight of the most probable world given the evid
     e.set(gen::kPred_stable, x, ev.stable[a]);
     e.set(gen::kPred_hover, x, ev.hover[a]);
     e.set(gen::kPred_table, x, ev.is_table[a]);
+    // overhang as domains/tabletop.ksm extracts it (within 4 mm, beyond 5 mm).
+    e.set(gen::kPred_overhang, x, blk::obb::overhang(model.block_scene(), a, 0.004, 0.005));
     for (std::int32_t b = 0; b < static_cast<std::int32_t>(ev.size()); ++b) {
       const std::array<std::int32_t, 2> xy{a, b};
       e.set(gen::kPred_contact, xy, a != b && ev.contact[a][b]);

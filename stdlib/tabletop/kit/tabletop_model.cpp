@@ -86,14 +86,16 @@ void TabletopModel::begin_move(std::size_t object, const Pose& pose, double ll_a
 
   const std::int32_t body = blocks::Scene::body_of_object(object);
   // hover(j) reads every pair of j: it can change only for bodies whose touching status
-  // with the moved body changes (blocks::touching_row), so those are re-extracted too.
+  // with the moved body changes (blocks::touching_row); overhang(j) reads the poses of the
+  // bodies j touches: it can change for every body touching the moved one, before or after
+  // the move. Those bodies are re-extracted too.
   const std::vector<std::uint32_t> before = blocks::touching_row(scene_, body);
   scene_.set_pose(body, pose);
   const std::vector<std::uint32_t> after = blocks::touching_row(scene_, body);
   changed_.assign(1, body);
   const bool every = scene_.hover_tolerances().size() > 32;  // more than touching_row tracks
   for (std::size_t j = 0; j < before.size(); ++j)
-    if (static_cast<std::int32_t>(j) != body && (every || before[j] != after[j]))
+    if (static_cast<std::int32_t>(j) != body && (every || (before[j] | after[j]) != 0))
       changed_.push_back(static_cast<std::int32_t>(j));
 
   const double ll = std::isnan(ll_at_pose) ? object_log_likelihood_at(object, pose) : ll_at_pose;

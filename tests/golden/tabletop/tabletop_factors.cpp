@@ -21,6 +21,7 @@ constexpr double kW_hidden_8a9f = 2.1972245773362196;  // prob 0.9
 constexpr double kW_falseest_317c = 0.8472978603872034;  // prob 0.7
 constexpr double kW_hidden_5734 = 0.8472978603872034;  // prob 0.7
 constexpr double kW_falseest_cfb1 = 2.1972245773362196;  // prob 0.9
+constexpr double kW_falseest_hidden_ead4 = 2.1972245773362196;  // prob 0.9
 
 }  // namespace
 
@@ -40,6 +41,7 @@ const mln::Program& program() {
     p.add_predicate({"falseEst", {kType_object}, true, false, -1});
     p.add_predicate({"overlap", {kType_object, kType_object}, false, false, -1});
     p.add_predicate({"flatter", {kType_object, kType_object}, false, false, -1});
+    p.add_predicate({"overhang", {kType_object}, false, false, -1});
     // higher_95b7: hard !higher(o, o)
     p.add_clause({"higher_95b7",
                   {{"o", kType_object, false}},
@@ -159,6 +161,11 @@ const mln::Program& program() {
                   {{"a", kType_object, false}, {"b", kType_object, false}},
                   {{kPred_overlap, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_stable, true, {mln::Term::var(0)}}, {kPred_stable, true, {mln::Term::var(1)}}, {kPred_flatter, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_falseEst, false, {mln::Term::var(1)}}},
                   kW_falseest_cfb1, false, "overlap(a, b) ^ stable(a) ^ stable(b) ^ flatter(a, b) => falseEst(b)", {"domains/tabletop.ksm", 0}});
+    // falseest_hidden_ead4: stable(o) ^ overhang(o) => falseEst(o) v hidden(o)
+    p.add_clause({"falseest_hidden_ead4",
+                  {{"o", kType_object, false}},
+                  {{kPred_stable, true, {mln::Term::var(0)}}, {kPred_overhang, true, {mln::Term::var(0)}}, {kPred_falseEst, false, {mln::Term::var(0)}}, {kPred_hidden, false, {mln::Term::var(0)}}},
+                  kW_falseest_hidden_ead4, false, "stable(o) ^ overhang(o) => falseEst(o) v hidden(o)", {"domains/tabletop.ksm", 0}});
     return p;
   }();
   return p;
@@ -541,6 +548,25 @@ void ground_falseest_cfb1(mln::FactorContext& g, std::int32_t clause) {
   }
 }
 
+// falseest_hidden_ead4: stable(o) ^ overhang(o) => falseEst(o) v hidden(o)
+void ground_falseest_hidden_ead4(mln::FactorContext& g, std::int32_t clause) {
+  const std::int32_t n_object = g.size(kType_object);
+  for (std::int32_t v_o = 0; v_o < n_object; ++v_o) {
+    if (!g.ev(kPred_stable, v_o)) {  // !stable(o)
+      g.satisfied(kW_falseest_hidden_ead4);
+      continue;
+    }
+    if (!g.ev(kPred_overhang, v_o)) {  // !overhang(o)
+      g.satisfied(kW_falseest_hidden_ead4);
+      continue;
+    }
+    g.begin();
+    if (g.query(kPred_falseEst, v_o, false)) { g.satisfied(kW_falseest_hidden_ead4); continue; }  // falseEst(o)
+    if (g.query(kPred_hidden, v_o, false)) { g.satisfied(kW_falseest_hidden_ead4); continue; }  // hidden(o)
+    g.soft(kW_falseest_hidden_ead4, clause);
+  }
+}
+
 }  // namespace
 
 mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) {
@@ -571,6 +597,7 @@ mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) 
   ground_falseest_317c(g, clause++);
   ground_hidden_5734(g, clause++);
   ground_falseest_cfb1(g, clause++);
+  ground_falseest_hidden_ead4(g, clause++);
   mln::fold_forced_atoms(grounding);
   return grounding;
 }
