@@ -136,10 +136,6 @@ struct Doors {  // door candidates on connecting walls (allocate / deallocate)
   double min_width = 0.6, max_width = 2.0;  // m
   bool operator==(const Doors&) const = default;
 };
-struct CutDoors {  // door candidates on the cut of a split (split / merge)
-  double min_width = 0.6, max_width = 2.0, min_wall = 0.5;  // m
-  bool operator==(const CutDoors&) const = default;
-};
 }  // namespace detect
 namespace partner {
 struct InverseDistance {  // partner choice of merge and interchange
@@ -156,7 +152,7 @@ struct Interchange {  // shared-wall shift or junction swap of two units (interc
 };
 }  // namespace move
 using Source = std::variant<detect::Wbu, detect::Fsu, detect::Rpb, detect::SplitLines, detect::Doors,
-                            detect::CutDoors, partner::InverseDistance, move::WallShift, move::Interchange>;
+                            partner::InverseDistance, move::WallShift, move::Interchange>;
 
 namespace detect {
 Source wbu(double min_size, int max_units);
@@ -164,7 +160,6 @@ Source fsu(std::int64_t after, int min_area_cells);
 Source rpb(double min_size);
 Source split_lines(int min_votes, double angle_tol);
 Source doors(double min_width, double max_width);
-Source cut_doors(double min_width, double max_width, double min_wall);
 }  // namespace detect
 namespace partner {
 Source inverse_distance();

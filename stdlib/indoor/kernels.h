@@ -73,10 +73,6 @@ struct KernelSources {
   std::function<std::vector<CandidateLine>(const World&, const Unit& unit)> split_lines;
   // Door candidates for ALLOCATE given the current world.
   std::function<std::span<const CandidateDoor>(const World&)> doors;
-  // Door candidates on the wall between two rectangles (the halves of a SPLIT), a function of
-  // the map and the two rectangles alone (SPLIT places them, MERGE deletes them). Unset: SPLIT
-  // places no door and MERGE declines two units that share a door.
-  std::function<std::vector<CandidateDoor>(const OrientedRect& a, const OrientedRect& b)> cut_doors;
 };
 
 struct KernelParams {

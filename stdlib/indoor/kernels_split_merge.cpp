@@ -7,21 +7,11 @@
 // to the one added unit with a wall under it). Before, a unit with a door could not be split
 // or merged, so a unit spanning several offices froze from the first door ALLOCATE gave it
 // (from iteration 4000 on: lab_c_scan kept one hall over six offices).
-// Doors on the cut (with a `detect.cut_doors` source): SPLIT places, with probability 1/2, the
-// door candidates of the wall between its two halves in the same move, and MERGE deletes the
-// doors its two units share when they are exactly those candidates. An office open to a corridor
-// over its whole front (wider than what ALLOCATE verifies first) could not be split before: the
-// cut alone puts predicted wall on the opening, so it was rejected before any door could explain
-// it (lab_c_scan, lab_a_scan's open cubicles). The candidates are a function of the two
-// rectangles and the map, so the doors are a function of the unit change and the coin: with no
-// candidate both sides of the coin make the same move (probability 1), otherwise each 1/2.
 #include <algorithm>
 #include <cmath>
 #include <array>
 #include <initializer_list>
-#include <random>
 #include <span>
-#include <tuple>
 
 #include "stdlib/indoor/kernel_common.h"
 
@@ -115,9 +105,9 @@ std::optional<UnitId> owner_of(const Context& c, const Door& d, std::span<const 
 }
 
 // The doors of the units `from` (removed by the move) re-attached to the units `to` (added by
-// it): each to its one owner in `to`. Doors joining two units of `from` are left to the caller
-// (MERGE deletes them, see cut_doors_of). nullopt (the move is not made) when a door has no
-// single owner in `to`, or has not its own unit as single owner in `from`. The last condition is the first one of the reverse move, so a move carries its doors
+// it): each to its one owner in `to`. nullopt (the move is not made) when a door joins two
+// units of `from`, has no single owner in `to`, or has not its own unit as single owner in
+// `from`. The last condition is the first one of the reverse move, so a move carries its doors
 // exactly when its reverse carries them back: the door changes are a function of the unit
 // changes, and the proposal densities stay those of the units.
 std::optional<std::vector<DoorChange>> carry_doors(const Context& c, const World& w, std::span<const Unit> from,
@@ -129,7 +119,7 @@ std::optional<std::vector<DoorChange>> carry_doors(const Context& c, const World
   for (const Door& d : w.doors()) {
     const bool fa = in_from(d.unit_a), fb = in_from(d.unit_b);
     if (!fa && !fb) continue;
-    if (fa && fb) continue;
+    if (fa && fb) return std::nullopt;
     const UnitId mine = fa ? d.unit_a : d.unit_b, other = fa ? d.unit_b : d.unit_a;
     const auto back = owner_of(c, d, from);
     const auto owner = owner_of(c, d, to);
@@ -149,13 +139,10 @@ bool carries_doors(const Context& c, const World& w, const Move& m, std::initial
   for (const UnitChange* ch : removed) from.push_back(*w.find_unit(ch->id));
   for (const UnitChange* ch : added) to.push_back(*ch->after);
   const auto want = carry_doors(c, w, from, to);
-  std::vector<const DoorChange*> carried;
-  for (const DoorChange& d : m.doors)
-    if (d.before && d.after) carried.push_back(&d);
-  if (!want || want->size() != carried.size()) return false;
+  if (!want || want->size() != m.doors.size()) return false;
   for (std::size_t i = 0; i < want->size(); ++i) {
     const DoorChange& x = (*want)[i];
-    const DoorChange& y = *carried[i];
+    const DoorChange& y = m.doors[i];
     if (x.id != y.id || !y.before || !y.after || y.before->unit_a != x.before->unit_a ||
         y.before->unit_b != x.before->unit_b || y.after->unit_a != x.after->unit_a ||
         y.after->unit_b != x.after->unit_b || distance(y.after->a, x.after->a) > c.p.coincide ||
@@ -163,62 +150,6 @@ bool carries_doors(const Context& c, const World& w, const Move& m, std::initial
       return false;
   }
   return true;
-}
-
-// The doors joining units x and y, in the world's order.
-std::vector<Door> shared_doors(const World& w, UnitId x, UnitId y) {
-  std::vector<Door> out;
-  for (const Door& d : w.doors())
-    if ((d.unit_a == x && d.unit_b == y) || (d.unit_a == y && d.unit_b == x)) out.push_back(d);
-  return out;
-}
-
-// The doors a SPLIT into {a, b} may place on its cut: the cut_doors candidates of the two
-// rectangles (asked in an order of the pair that does not depend on which is `a`), each on a
-// wall of both, joining a and b. Ids from `first_id` on.
-std::vector<Door> cut_doors_of(const Context& c, const Unit& a, const Unit& b, DoorId first_id) {
-  std::vector<Door> out;
-  if (!c.src.cut_doors) return out;
-  const bool swap = std::tie(b.rect.cx, b.rect.cy) < std::tie(a.rect.cx, a.rect.cy);
-  for (const CandidateDoor& k : c.src.cut_doors(swap ? b.rect : a.rect, swap ? a.rect : b.rect)) {
-    if (!(k.weight > 0.0) || !std::isfinite(door_wall_distance(c, a.rect, k.a, k.b)) ||
-        !std::isfinite(door_wall_distance(c, b.rect, k.a, k.b)))
-      continue;
-    out.push_back(c.ev.make_door(first_id + static_cast<DoorId>(out.size()), std::min(a.id, b.id),
-                                 std::max(a.id, b.id), k.a, k.b));
-  }
-  return out;
-}
-
-// The move's doors that are added (SPLIT) or deleted (MERGE) rather than carried.
-std::vector<Door> placed_doors(const Move& m, bool added) {
-  std::vector<Door> out;
-  for (const DoorChange& d : m.doors)
-    if (added && !d.before && d.after) out.push_back(*d.after);
-    else if (!added && d.before && !d.after) out.push_back(*d.before);
-  return out;
-}
-
-// The same doors in any order (units and segments; ids are not compared).
-bool same_doors(const Context& c, const std::vector<Door>& x, const std::vector<Door>& y) {
-  if (x.size() != y.size()) return false;
-  std::vector<bool> used(y.size(), false);
-  for (const Door& d : x) {
-    bool found = false;
-    for (std::size_t j = 0; j < y.size() && !found; ++j)
-      if (!used[j] && d.unit_a == y[j].unit_a && d.unit_b == y[j].unit_b && distance(d.a, y[j].a) <= c.p.coincide &&
-          distance(d.b, y[j].b) <= c.p.coincide)
-        used[j] = found = true;
-    if (!found) return false;
-  }
-  return true;
-}
-
-// log probability of SPLIT's coin making the cut doors `placed` when the candidates are `cands`:
-// no candidate, the coin does not matter (0); else log 1/2 for none or all of them, -inf otherwise.
-double log_coin(const Context& c, const std::vector<Door>& cands, const std::vector<Door>& placed) {
-  if (cands.empty()) return placed.empty() ? 0.0 : kNegInf;
-  return placed.empty() || same_doors(c, cands, placed) ? std::log(0.5) : kNegInf;
 }
 
 }  // namespace
@@ -241,16 +172,11 @@ std::optional<Forward> propose_split(const Context& c, const World& w, Rng& rng)
   const std::array<Unit, 2> halves{a, b};
   auto doors = carry_doors(c, w, std::span<const Unit>(&u, 1), halves);
   if (!doors) return std::nullopt;
-  const auto cands = cut_doors_of(c, a, b, w.next_door_id());
-  const bool place = !cands.empty() && std::bernoulli_distribution(0.5)(rng);
-  if (place)
-    for (const Door& d : cands) doors->push_back({d.id, std::nullopt, d});
   Forward fw;
   fw.move.kind = KernelKind::Split;
   fw.move.units = {{u.id, u, std::nullopt}, {a.id, std::nullopt, a}, {b.id, std::nullopt, b}};
   fw.move.doors = std::move(*doors);
-  fw.log_q = -std::log(static_cast<double>(units.size())) + log_cut_mass(c, u.rect, lines, lw, a.rect, b.rect) +
-             log_coin(c, cands, place ? cands : std::vector<Door>{});
+  fw.log_q = -std::log(static_cast<double>(units.size())) + log_cut_mass(c, u.rect, lines, lw, a.rect, b.rect);
   return fw;
 }
 
@@ -260,14 +186,11 @@ double log_q_split(const Context& c, const World& w, const Move& m) {
   const UnitChange& ch = *s.removed[0];
   if (!unit_matches(c, w, ch.id, ch.before->rect) || !carries_doors(c, w, m, {&ch}, {s.added[0], s.added[1]}))
     return kNegInf;
-  const Unit& a = *s.added[0]->after;
-  const Unit& b = *s.added[1]->after;
-  const double coin = log_coin(c, cut_doors_of(c, a, b, 0), placed_doors(m, true));
-  if (!std::isfinite(coin)) return kNegInf;
   const Unit& u = *w.find_unit(ch.id);
   const auto lines = c.src.split_lines(w, u);
   return -std::log(static_cast<double>(w.units().size())) +
-         log_cut_mass(c, u.rect, lines, line_weights(c, lines), a.rect, b.rect) + coin;
+         log_cut_mass(c, u.rect, lines, line_weights(c, lines), s.added[0]->after->rect,
+                      s.added[1]->after->rect);
 }
 
 std::optional<Forward> propose_merge(const Context& c, const World& w, Rng& rng) {
@@ -283,9 +206,6 @@ std::optional<Forward> propose_merge(const Context& c, const World& w, Rng& rng)
   const std::array<Unit, 2> parts{r, s};
   auto doors = carry_doors(c, w, parts, std::span<const Unit>(&u, 1));
   if (!doors) return std::nullopt;
-  const auto shared = shared_doors(w, r.id, s.id);
-  if (!shared.empty() && !same_doors(c, cut_doors_of(c, r, s, 0), shared)) return std::nullopt;
-  for (const Door& d : shared) doors->push_back({d.id, d, std::nullopt});
   Forward fw;
   fw.move.kind = KernelKind::Merge;
   fw.move.units = {{r.id, r, std::nullopt}, {s.id, s, std::nullopt}, {u.id, std::nullopt, u}};
@@ -303,10 +223,6 @@ double log_q_merge(const Context& c, const World& w, const Move& m) {
   const auto rect = merged(c, w.find_unit(a.id)->rect, w.find_unit(b.id)->rect);
   if (!rect || !same_rect(*rect, s.added[0]->after->rect, c.p.coincide)) return kNegInf;
   if (!carries_doors(c, w, m, {&a, &b}, {s.added[0]})) return kNegInf;
-  const auto shared = shared_doors(w, a.id, b.id);
-  if (!same_doors(c, shared, placed_doors(m, false))) return kNegInf;
-  if (!shared.empty() && !same_doors(c, cut_doors_of(c, *w.find_unit(a.id), *w.find_unit(b.id), 0), shared))
-    return kNegInf;
   return log_pair_probability(w, a.id, b.id);
 }
 

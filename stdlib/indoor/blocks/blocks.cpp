@@ -115,9 +115,6 @@ Source detect::fsu(std::int64_t after, int min_area_cells) { return Fsu{after, m
 Source detect::rpb(double min_size) { return Rpb{min_size}; }
 Source detect::split_lines(int min_votes, double angle_tol) { return SplitLines{min_votes, angle_tol}; }
 Source detect::doors(double min_width, double max_width) { return Doors{min_width, max_width}; }
-Source detect::cut_doors(double min_width, double max_width, double min_wall) {
-  return CutDoors{min_width, max_width, min_wall};
-}
 Source partner::inverse_distance() { return InverseDistance{}; }
 Source move::wall_shift(double sigma) { return WallShift{sigma}; }
 Source move::interchange() { return Interchange{}; }

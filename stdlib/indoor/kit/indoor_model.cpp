@@ -52,17 +52,6 @@ std::vector<CandidateLine> split_lines_of(const SharedInput& in, const SourcePoo
   return lines;
 }
 
-// The length of the cut between two halves that their door candidates leave to wall: the side of
-// `a` along the doors minus the doors' lengths (cells).
-double cut_wall_left(const OrientedRect& a, const std::vector<CandidateDoor>& doors) {
-  const double len = std::hypot(doors[0].b.x - doors[0].a.x, doors[0].b.y - doors[0].a.y);
-  const double dx = (doors[0].b.x - doors[0].a.x) / len, dy = (doors[0].b.y - doors[0].a.y) / len;
-  const double along_w = std::abs(dx * std::cos(a.theta) + dy * std::sin(a.theta));
-  double left = along_w > 0.5 ? a.w : a.h;
-  for (const auto& k : doors) left -= std::hypot(k.b.x - k.a.x, k.b.y - k.a.y);
-  return left;
-}
-
 }  // namespace
 
 IndoorModel::IndoorModel(std::shared_ptr<const SharedInput> in) : in_(std::move(in)), sw_(in_->grid, in_->score) {
@@ -84,18 +73,6 @@ IndoorModel::IndoorModel(std::shared_ptr<const SharedInput> in) : in_(std::move(
       }
       return it->second;
     };
-    if (!p->cfg->cut_doors.empty())
-      src.cut_doors = [p, this](const OrientedRect& a, const OrientedRect& b) {
-        std::vector<CandidateDoor> out;
-        for (const auto& d : p->cfg->cut_doors) {
-          const auto found = to_door_candidates(detect::detect_doors(
-              in_->grid, {a, b}, door_params(blocks::detect::Doors{d.min_width, d.max_width}, in_->resolution),
-              detect::GridCheck::Trusted));  // checked by sw_
-          if (found.empty() || cut_wall_left(a, found) >= d.min_wall / in_->resolution)
-            out.insert(out.end(), found.begin(), found.end());
-        }
-        return out;
-      };
     KernelParams kp = in_->kernel;
     if (!p->cfg->wall_shift.empty()) kp.shift_sigma = p->cfg->wall_shift.front().sigma;
     p->ks = std::make_unique<KernelSet>(*in_->evidence, std::move(src), kp);
