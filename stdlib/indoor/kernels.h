@@ -12,8 +12,9 @@
 //   (ALLOCATE). Their element types mirror ksmc::stdlib::indoor::detect's UnitCandidate,
 //   SplitLine and DoorCandidate (use the to_candidates helpers to convert).
 //
-// Units or doors attached: a unit that carries a door is not changed by REMOVE, SHRINK/DILATE
-// or INTERCHANGE (the proposal is declined; DELETE its doors first). SPLIT and MERGE carry the
+// Units or doors attached: a unit that carries a door is not changed by REMOVE or INTERCHANGE
+// (the proposal is declined; DELETE its doors first); SHRINK/DILATE change it only when each of
+// its doors stays on a wall of the changed rectangle (within door_snap). SPLIT and MERGE carry the
 // doors of the units they remove to the units they add (each door to the one added unit with a
 // wall under it; declined when that is not unique or the reverse would not carry it back).
 #pragma once

@@ -2,6 +2,12 @@
 // parallel to itself by a zero-mean Gaussian amount whose sign is the kernel's: SHRINK moves
 // the wall inward, DILATE outward (each a half-normal of scale shift_sigma). The reverse of
 // SHRINK(wall j, -d) is DILATE(wall j, +d) on the changed unit.
+// Doors: a unit with doors may change when each of its doors still lies on a wall of the changed
+// rectangle (door_wall_distance within door_snap, the rule ALLOCATE attaches by); the doors stay
+// as they are. Every door lies on a wall of its units in any world the kernels reach, so the
+// reverse move passes the same test and the proposal densities are those of the wall shift.
+// Before, a unit with a door was frozen for SHRINK / DILATE (its shape could not be repaired
+// once ALLOCATE or SPLIT had given it a door).
 #include <cmath>
 
 #include "stdlib/indoor/kernel_common.h"
@@ -25,6 +31,13 @@ double log_choice(const Context& c, const World& w, UnitId id, int wall, double 
          std::log(2.0) + log_normal_pdf(std::abs(delta), c.p.shift_sigma);
 }
 
+// Every door of unit `id` lies on a wall of `r`.
+bool doors_stay(const Context& c, const World& w, UnitId id, const OrientedRect& r) {
+  for (const Door& d : w.doors())
+    if ((d.unit_a == id || d.unit_b == id) && !(door_wall_distance(c, r, d.a, d.b) <= c.p.door_snap)) return false;
+  return true;
+}
+
 }  // namespace
 
 std::optional<Forward> propose_shift(KernelKind kind, const Context& c, const World& w, Rng& rng) {
@@ -38,10 +51,9 @@ std::optional<Forward> propose_shift(KernelKind kind, const Context& c, const Wo
   const double mag = std::abs(std::normal_distribution<double>(0.0, c.p.shift_sigma)(rng));
   if (!(mag > 0.0)) return std::nullopt;
   const double delta = kind == KernelKind::Shrink ? -mag : mag;
-  if (w.door_count(u.id) > 0) return std::nullopt;
   const int wall = static_cast<int>(*j);
   const auto r = shifted(c, u.rect, wall, delta);
-  if (!r) return std::nullopt;
+  if (!r || !doors_stay(c, w, u.id, *r)) return std::nullopt;
   Forward f;
   f.move.kind = kind;
   f.move.units.push_back({u.id, u, c.ev.make_unit(u.id, *r, u.lut_class)});
@@ -61,9 +73,9 @@ double log_q_shift(KernelKind kind, const Context& c, const World& w, const Move
   if ((kind == KernelKind::Shrink && !(delta < 0.0)) || (kind == KernelKind::Dilate && !(delta > 0.0)))
     return kNegInf;
   const UnitChange& ch = *s.modified[0];
-  if (!unit_free(c, w, ch.id, ch.before->rect)) return kNegInf;
+  if (!unit_matches(c, w, ch.id, ch.before->rect)) return kNegInf;
   const auto r = shifted(c, w.find_unit(ch.id)->rect, wall, delta);
-  if (!r || !same_rect(*r, ch.after->rect, c.p.coincide)) return kNegInf;
+  if (!r || !same_rect(*r, ch.after->rect, c.p.coincide) || !doors_stay(c, w, ch.id, *r)) return kNegInf;
   return log_choice(c, w, ch.id, wall, delta);
 }
 

@@ -101,6 +101,15 @@ void check_inverse_scored(const KernelSet& ks, KernelKind k, const World& w,
   for (const Unit& u : w.units()) CHECK(same_rect(u.rect, back.find_unit(u.id)->rect, 1e-9));
 }
 
+// A+B (unit 1, y in [10, 40]) over the corridor D (unit 2), joined by the A-D door on y = 40.
+World a_b_over_d_with_door(const KernelFixture& fx) {
+  World w = world_of({fx.unit(1, {10, 10, 80, 40}), fx.unit(2, fx.rooms[3])});
+  Move door;
+  door.doors.push_back({1, std::nullopt, fx.evidence.make_door(1, 1, 2, {27, 40}, {33, 40})});
+  w.apply(door);
+  return w;
+}
+
 }  // namespace
 
 TEST_CASE("ADD / REMOVE round trip and proposal frequencies", "[indoor][kernels]") {
@@ -160,11 +169,7 @@ TEST_CASE("SPLIT / MERGE round trip", "[indoor][kernels]") {
 TEST_CASE("SPLIT / MERGE carry the doors of the units they replace", "[indoor][kernels]") {
   KernelFixture fx;
   KernelSet ks(fx.evidence, fx.sources(), params());
-  // A+B (unit 1) over the corridor D (unit 2), joined by the A-D door.
-  World w = world_of({fx.unit(1, {10, 10, 80, 40}), fx.unit(2, fx.rooms[3])});
-  Move door;
-  door.doors.push_back({1, std::nullopt, fx.evidence.make_door(1, 1, 2, {27, 40}, {33, 40})});
-  w.apply(door);
+  const World w = a_b_over_d_with_door(fx);
   // SPLIT near x = 50: the door goes to the A half, the only one with a wall under it.
   auto at_a = [](const Proposal& p) {
     if (p.move.units[0].id != 1 || p.move.units[1].after->rect.cx > 45.0) return false;
@@ -209,6 +214,40 @@ TEST_CASE("SHRINK / DILATE inverse moves are scored consistently", "[indoor][ker
     if (s) CHECK(s->move.units[0].after->rect.area() < s->move.units[0].before->rect.area());
     auto d = ks.propose(KernelKind::Dilate, w, rng);
     if (d) CHECK(d->move.units[0].after->rect.area() > d->move.units[0].before->rect.area());
+  }
+}
+
+// A unit with a door may change shape when the door stays on one of its walls (within
+// door_snap); before, it was frozen for SHRINK / DILATE.
+TEST_CASE("SHRINK / DILATE change a unit with doors that stay on its walls", "[indoor][kernels]") {
+  KernelFixture fx;
+  KernelSet ks(fx.evidence, fx.sources(), params());
+  const World w = a_b_over_d_with_door(fx);
+  const auto on_unit_1 = [](const Proposal& p) { return p.move.units[0].id == 1; };
+  check_inverse_scored(ks, KernelKind::Shrink, w, on_unit_1);
+  check_inverse_scored(ks, KernelKind::Dilate, w, on_unit_1);
+  // Every proposal on unit 1 keeps the door's wall (y = 40, wall 2) within door_snap.
+  Rng rng(3);
+  int seen = 0;
+  for (int i = 0; i < 400; ++i)
+    for (KernelKind k : {KernelKind::Shrink, KernelKind::Dilate}) {
+      const auto p = ks.propose(k, w, rng);
+      if (!p || p->move.units[0].id != 1) continue;
+      ++seen;
+      const OrientedRect& r = p->move.units[0].after->rect;
+      CHECK(std::abs(r.cy + 0.5 * r.h - 40.0) <= params().door_snap + 1e-9);
+      CHECK(p->move.doors.empty());
+    }
+  CHECK(seen > 0);
+  // The door's wall moved by 1.5 cells is a DILATE move; by 3 cells (the door left behind) not.
+  const Unit& u = *w.find_unit(1);
+  for (const double delta : {1.5, 3.0}) {
+    Move m;
+    m.kind = KernelKind::Dilate;
+    m.units.push_back({1, u, fx.evidence.make_unit(1, OrientedRect{45, 25 + 0.5 * delta, 70, 30 + delta, 0.0})});
+    m.detail.wall = 2;
+    m.detail.delta = delta;
+    CHECK(std::isfinite(ks.log_q(KernelKind::Dilate, w, m)) == (delta < 2.0));
   }
 }
 
