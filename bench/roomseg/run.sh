@@ -4,6 +4,8 @@
 # (../shared/data/maps/bormann_ipa/test_maps), unfurnished and furnished, and scores each
 # run's segmentation.png (labels.png when absent) with roomseg_score against the map's
 # ground truth. Prints per-map rows and the per-map averages beside the published ones.
+# Environment: SEED (default 1), ROOMSEG_MAPS ("map1 map2 ...": a subset of the 20),
+# KSMC_SHARED_DIR (where ../shared is).
 set -euo pipefail
 bin=$1; scorer=$2; out=$3; iters=${4:-10000}
 shift $(( $# >= 4 ? 4 : $# ))
@@ -30,7 +32,7 @@ for variant in unfurnished furnished; do
     dir=$out/$variant/$m
     mkdir -p "$out/$variant"
     t0=$(date +%s.%N)
-    if ! "$bin" "$img" --resolution 0.05 --out "$dir" --seed 1 --iterations "$iters" --quiet "$@" > "$dir.log" 2>&1; then
+    if ! "$bin" "$img" --resolution 0.05 --out "$dir" --seed "${SEED:-1}" --iterations "$iters" --quiet "$@" > "$dir.log" 2>&1; then
       echo "| $m | $variant | run failed (see $dir.log) | | | | | |"; continue
     fi
     t1=$(date +%s.%N)
