@@ -17,7 +17,12 @@ namespace ksmc::runtime::mln {
 struct SourceLoc {
   std::string file;
   std::int32_t line = 0;
-  std::string str() const { return file.empty() ? std::string("<program>") : file + ":" + std::to_string(line); }
+  // "file:line"; the file alone when the line is 0 (generated code records no line, so an
+  // edit above a rule leaves its code unchanged).
+  std::string str() const {
+    if (file.empty()) return "<program>";
+    return line > 0 ? file + ":" + std::to_string(line) : file;
+  }
 };
 
 struct Predicate {
