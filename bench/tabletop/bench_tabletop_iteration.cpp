@@ -25,13 +25,13 @@
 #include "stdlib/tabletop/kit/refine_kernel.h"
 #include "stdlib/tabletop/kit/tabletop_model.h"
 #include "stdlib/tabletop/scene_io.h"
-#include "stdlib/tabletop/sim/generator.h"
-#include "stdlib/tabletop/sim/scene_writer.h"
+#include "tools/tabletop_sim/generator.h"
+#include "tools/tabletop_sim/scene_writer.h"
 #include "tests/tabletop_kit/binding_fixture.h"
 
 namespace kit = ksmc::stdlib::tabletop::kit;
 namespace tt = ksmc::stdlib::tabletop;
-namespace sim = ksmc::stdlib::tabletop::sim;
+namespace sim = ksmc::tools::tabletop_sim;
 namespace rm = ksmc::runtime::mcmc;
 
 namespace {

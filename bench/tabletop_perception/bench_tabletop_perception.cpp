@@ -15,9 +15,10 @@
 #include <fmt/format.h>
 
 #include "stdlib/tabletop/perception/cloud_likelihood.h"
-#include "stdlib/tabletop/perception/sim/sim_cloud.h"
+#include "tools/perception_sim/sim_cloud.h"
 
 namespace pc = ksmc::stdlib::tabletop::perception;
+namespace ps = ksmc::tools::perception_sim;
 
 namespace {
 
@@ -47,14 +48,14 @@ int main(int argc, char** argv) {
              "s/frame (mem)", "s/frame PLY", "us likelihood", "us update");
   for (int n : {5, 10}) {
     for (const std::string name : {"singles", "stacks"}) {
-      pc::SimFamily fam;
-      for (auto& f : pc::sim_families(n, n))
+      ps::SimFamily fam;
+      for (auto& f : ps::sim_families(n, n))
         if (f.name == name) fam = f;
       std::vector<double> mem, ply, lik, upd, points, found;
       for (std::uint64_t s = 0; s < 3; ++s) {
-        const pc::SimFrame f = pc::simulate_frame(ksmc::stdlib::tabletop::sim::scene_seed(42 + static_cast<std::uint64_t>(n), s), fam);
+        const ps::SimFrame f = ps::simulate_frame(ksmc::tools::tabletop_sim::scene_seed(42 + static_cast<std::uint64_t>(n), s), fam);
         pc::CloudOptions opt;
-        opt.camera = pc::scene_camera(f.scene.camera);
+        opt.camera = ps::scene_camera(f.scene.camera);
         pc::CloudScene cs;
         mem.push_back(seconds([&] { cs = pc::scene_from_points(f.cloud, "bench", opt); }, runs));
         const auto file = dir / "frame.ply";

@@ -19,10 +19,10 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "stdlib/tabletop/perception/stereo/scene_from_stereo.h"
-#include "stdlib/tabletop/perception/stereo/synth/synth_stereo.h"
+#include "tools/stereo_synth/synth_stereo.h"
 
 namespace st = ksmc::stdlib::tabletop::perception::stereo;
-namespace sy = ksmc::stdlib::tabletop::perception::stereo::synth;
+namespace sy = ksmc::tools::stereo_synth;
 namespace fs = std::filesystem;
 
 namespace {

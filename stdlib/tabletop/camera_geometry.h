@@ -1,5 +1,5 @@
 // Geometry shared by the synthetic cameras (the Bullet scene generator's camera and depth
-// sensor in sim/, the stereo pair synthesiser in perception/stereo/synth/): the rotation of
+// sensor in tools/tabletop_sim, the stereo pair synthesiser in tools/stereo_synth): the rotation of
 // a camera looking along a direction, and where a ray enters a box. Eigen only, so either
 // library can use it without linking the other.
 #pragma once

@@ -17,13 +17,13 @@
 
 #include "stdlib/tabletop/keypoint_fit.h"
 #include "stdlib/tabletop/scene_io.h"
-#include "stdlib/tabletop/sim/generator.h"
-#include "stdlib/tabletop/sim/scene_writer.h"
+#include "tools/tabletop_sim/generator.h"
+#include "tools/tabletop_sim/scene_writer.h"
 #include "tests/tabletop_kit/e2e_support.h"
 #include "tools/tabletop_families/families.h"
 
 using namespace ksmc::tests::tabletop_kit;
-namespace sim = ksmc::stdlib::tabletop::sim;
+namespace sim = ksmc::tools::tabletop_sim;
 
 namespace {
 

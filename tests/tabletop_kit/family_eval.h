@@ -12,14 +12,14 @@
 #include <vector>
 
 #include "stdlib/tabletop/scene_io.h"
-#include "stdlib/tabletop/sim/scene_writer.h"
+#include "tools/tabletop_sim/scene_writer.h"
 #include "tests/tabletop_kit/e2e_support.h"
 #include "tools/tabletop_families/families.h"
 
 namespace ksmc::tests::tabletop_kit {
 
 namespace tf = ksmc::tools::tabletop_families;
-namespace sim = ksmc::stdlib::tabletop::sim;
+namespace sim = ksmc::tools::tabletop_sim;
 
 struct FamilyScore {
   std::string family;

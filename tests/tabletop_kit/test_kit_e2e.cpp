@@ -1,4 +1,4 @@
-// End to end on physics-generated scenes (stdlib/tabletop/sim) and on the real HOPE frame:
+// End to end on physics-generated scenes (tools/tabletop_sim) and on the real HOPE frame:
 // the kit's sampler + MLN against the generator's truth.
 #include <catch2/catch.hpp>
 
@@ -7,13 +7,13 @@
 
 #include "stdlib/tabletop/hope_import.h"
 #include "stdlib/tabletop/scene_io.h"
-#include "stdlib/tabletop/sim/generator.h"
-#include "stdlib/tabletop/sim/scene_writer.h"
+#include "tools/tabletop_sim/generator.h"
+#include "tools/tabletop_sim/scene_writer.h"
 #include "tests/support/shared_data.h"
 #include "tests/tabletop_kit/e2e_support.h"
 
 using namespace ksmc::tests::tabletop_kit;
-namespace sim = ksmc::stdlib::tabletop::sim;
+namespace sim = ksmc::tools::tabletop_sim;
 
 namespace {
 

@@ -4,9 +4,10 @@
 #include <algorithm>
 #include <numbers>
 
-#include "stdlib/tabletop/perception/sim/sim_cloud.h"
+#include "tools/perception_sim/sim_cloud.h"
 
 using namespace ksmc::stdlib::tabletop::perception;
+using namespace ksmc::tools::perception_sim;
 
 TEST_CASE("simulated clouds: single boxes recovered within 1 cm / 3 degrees", "[perception][sim]") {
   SimFamily fam = sim_families(5, 6).front();
@@ -14,7 +15,7 @@ TEST_CASE("simulated clouds: single boxes recovered within 1 cm / 3 degrees", "[
   int boxes = 0, within = 0;
   std::vector<double> centre;
   for (std::uint64_t s = 0; s < 3; ++s) {
-    const SimFrame f = simulate_frame(ksmc::stdlib::tabletop::sim::scene_seed(7, s), fam);
+    const SimFrame f = simulate_frame(ksmc::tools::tabletop_sim::scene_seed(7, s), fam);
     CHECK(f.cloud.size() > 10000);
     CloudOptions opt;
     opt.camera = scene_camera(f.scene.camera);

@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <numbers>
 
-#include "stdlib/tabletop/sim/corruption.h"
+#include "tools/tabletop_sim/corruption.h"
 
-using namespace ksmc::stdlib::tabletop::sim;
+using namespace ksmc::tools::tabletop_sim;
 
 namespace {
 Box make_box(Eigen::Vector3d size, Eigen::Vector3d t, Eigen::Quaterniond q = Eigen::Quaterniond::Identity()) {

@@ -4,10 +4,10 @@
 #include <cmath>
 #include <numbers>
 
-#include "stdlib/tabletop/sim/camera.h"
-#include "stdlib/tabletop/sim/relations.h"
+#include "tools/tabletop_sim/camera.h"
+#include "tools/tabletop_sim/relations.h"
 
-using namespace ksmc::stdlib::tabletop::sim;
+using namespace ksmc::tools::tabletop_sim;
 
 namespace {
 Box make_box(Eigen::Vector3d size, Eigen::Vector3d t, Eigen::Quaterniond q = Eigen::Quaterniond::Identity()) {

@@ -5,9 +5,9 @@
 #include <filesystem>
 
 #include "stdlib/tabletop/scene_io.h"
-#include "stdlib/tabletop/sim/scene_writer.h"
+#include "tools/tabletop_sim/scene_writer.h"
 
-namespace sim = ksmc::stdlib::tabletop::sim;
+namespace sim = ksmc::tools::tabletop_sim;
 namespace tt = ksmc::stdlib::tabletop;
 namespace fs = std::filesystem;
 

@@ -12,9 +12,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "stdlib/tabletop/sim/scene_writer.h"
+#include "tools/tabletop_sim/scene_writer.h"
 
-using namespace ksmc::stdlib::tabletop::sim;
+using namespace ksmc::tools::tabletop_sim;
 namespace fs = std::filesystem;
 
 namespace {

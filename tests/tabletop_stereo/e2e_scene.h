@@ -20,11 +20,11 @@
 #include <opencv2/imgproc.hpp>
 
 #include "stdlib/tabletop/perception/stereo/object_db.h"
-#include "stdlib/tabletop/perception/stereo/synth/synth_stereo.h"
+#include "tools/stereo_synth/synth_stereo.h"
 
 namespace ksmc::tests::stereo {
 
-namespace sy = ksmc::stdlib::tabletop::perception::stereo::synth;
+namespace sy = ksmc::tools::stereo_synth;
 namespace st = ksmc::stdlib::tabletop::perception::stereo;
 
 struct E2eScene {

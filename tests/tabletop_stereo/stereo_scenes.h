@@ -10,12 +10,12 @@
 
 #include <opencv2/core.hpp>
 
-#include "stdlib/tabletop/perception/stereo/synth/synth_stereo.h"
+#include "tools/stereo_synth/synth_stereo.h"
 
 namespace ksmc::tests::stereo {
 
 namespace st = ksmc::stdlib::tabletop::perception::stereo;
-namespace sy = ksmc::stdlib::tabletop::perception::stereo::synth;
+namespace sy = ksmc::tools::stereo_synth;
 using ksmc::stdlib::tabletop::Pose;
 
 inline sy::Rig standard_rig() {

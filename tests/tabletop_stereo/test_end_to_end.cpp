@@ -16,13 +16,13 @@
 
 #include "e2e_scene.h"
 #include "stdlib/tabletop/perception/cloud_io.h"
-#include "stdlib/tabletop/sim/depth_render.h"
+#include "tools/tabletop_sim/depth_render.h"
 #include "stereo_scenes.h"
 #include "tests/support/tabletop_run.h"
 
 namespace fs = std::filesystem;
 namespace ts = ksmc::tests::stereo;
-namespace sim = ksmc::stdlib::tabletop::sim;
+namespace sim = ksmc::tools::tabletop_sim;
 namespace pc = ksmc::stdlib::tabletop::perception;
 using ksmc::tests::read_json;
 using ksmc::tests::run_tabletop;

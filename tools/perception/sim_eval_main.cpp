@@ -11,9 +11,10 @@
 
 #include <fmt/format.h>
 
-#include "stdlib/tabletop/perception/sim/sim_cloud.h"
+#include "tools/perception_sim/sim_cloud.h"
 
 namespace pc = ksmc::stdlib::tabletop::perception;
+namespace ps = ksmc::tools::perception_sim;
 
 namespace {
 
@@ -68,7 +69,7 @@ int main(int argc, char** argv) {
   fmt::print("{:<8} {:>5} {:>6} {:>7} {:>6} | {:>10} {:>10} {:>9} {:>9} {:>11} {:>11} | {:>8}\n", "family", "boxes",
              "found", "missed", "extra", "centre med", "centre p90", "angle med", "angle p90", "size med", "size p90",
              "in tol");
-  for (pc::SimFamily fam : pc::sim_families(lo, hi)) {
+  for (ps::SimFamily fam : ps::sim_families(lo, hi)) {
     fam.depth.sigma_at_1m = sigma;
     fam.depth.missing_rate = missing;
     fam.depth.stride = stride;
@@ -76,9 +77,9 @@ int main(int argc, char** argv) {
     std::vector<double> centre, angle, size;
     for (int s = 0; s < scenes; ++s) {
       try {
-        const pc::SimFrame f = pc::simulate_frame(ksmc::stdlib::tabletop::sim::scene_seed(seed, static_cast<std::uint64_t>(s)), fam);
+        const ps::SimFrame f = ps::simulate_frame(ksmc::tools::tabletop_sim::scene_seed(seed, static_cast<std::uint64_t>(s)), fam);
         pc::CloudOptions opt;
-        opt.camera = pc::scene_camera(f.scene.camera);
+        opt.camera = ps::scene_camera(f.scene.camera);
         const pc::CloudScene cs = pc::scene_from_points(f.cloud, fmt::format("{} scene {}", fam.name, s), opt);
         const pc::TruthReport rep = pc::evaluate_same_frame(pc::camera_frame_boxes(cs.scene), f.truth, 0.05);
         boxes += static_cast<int>(f.truth.size());

@@ -12,9 +12,9 @@
 #include <fmt/format.h>
 #include <opencv2/imgcodecs.hpp>
 
-#include "stdlib/tabletop/perception/stereo/synth/synth_stereo.h"
+#include "tools/stereo_synth/synth_stereo.h"
 
-namespace sy = ksmc::stdlib::tabletop::perception::stereo::synth;
+namespace sy = ksmc::tools::stereo_synth;
 namespace st = ksmc::stdlib::tabletop::perception::stereo;
 namespace fs = std::filesystem;
 using ksmc::stdlib::tabletop::Pose;

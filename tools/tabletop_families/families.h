@@ -11,11 +11,11 @@
 #include <string>
 #include <string_view>
 
-#include "stdlib/tabletop/sim/generator.h"
+#include "tools/tabletop_sim/generator.h"
 
 namespace ksmc::tools::tabletop_families {
 
-namespace sim = ksmc::stdlib::tabletop::sim;
+namespace sim = ksmc::tools::tabletop_sim;
 
 struct Family {
   std::string_view name;

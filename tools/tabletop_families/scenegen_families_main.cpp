@@ -11,12 +11,12 @@
 
 #include <fmt/format.h>
 
-#include "stdlib/tabletop/sim/scene_writer.h"
-#include "stdlib/tabletop/sim/scenegen_flags.h"
+#include "tools/tabletop_sim/scene_writer.h"
+#include "tools/tabletop_sim/scenegen_flags.h"
 #include "tools/tabletop_families/families.h"
 
 namespace tf = ksmc::tools::tabletop_families;
-namespace sim = ksmc::stdlib::tabletop::sim;
+namespace sim = ksmc::tools::tabletop_sim;
 using sim::UsageError;
 
 namespace {
