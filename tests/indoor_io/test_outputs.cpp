@@ -15,7 +15,7 @@
 #include "stdlib/indoor/io/map_loader.h"
 #include "stdlib/indoor/io/prediction_rate.h"
 #include "stdlib/indoor/io/graph_dot.h"
-#include "stdlib/indoor/io/sim_floor_plan.h"
+#include "tools/indoor_sim/sim_floor_plan.h"
 #include "stdlib/indoor/io/trace_plot.h"
 #include "stdlib/indoor/io/world_images.h"
 #include "stdlib/indoor/io/world_json.h"
@@ -25,6 +25,7 @@
 
 using namespace ksmc::stdlib::indoor;
 using namespace ksmc::stdlib::indoor::io;
+using namespace ksmc::tools::indoor_sim;
 using ksmc::tests::read_all;
 using ksmc::tests::TempDir;
 namespace fs = std::filesystem;

@@ -1,4 +1,4 @@
-#include "stdlib/indoor/io/sim_floor_plan.h"
+#include "tools/indoor_sim/sim_floor_plan.h"
 
 #include <cmath>
 #include <random>
@@ -8,7 +8,14 @@
 #include <fmt/format.h>
 #include <opencv2/imgproc.hpp>
 
-namespace ksmc::stdlib::indoor::io {
+namespace ksmc::tools::indoor_sim {
+
+using stdlib::indoor::Point2;
+using stdlib::indoor::io::classify_image;
+using stdlib::indoor::io::count_classes;
+using stdlib::indoor::io::DoorResult;
+using stdlib::indoor::io::Thresholds;
+using stdlib::indoor::io::UnitResult;
 
 namespace {
 
@@ -179,4 +186,4 @@ SimFloorPlan make_sim_office(std::uint64_t seed) {
   return out;
 }
 
-}  // namespace ksmc::stdlib::indoor::io
+}  // namespace ksmc::tools::indoor_sim

@@ -10,7 +10,9 @@
 
 #include "stdlib/indoor/io/world_result.h"
 
-namespace ksmc::stdlib::indoor::io {
+namespace ksmc::tools::indoor_sim {
+
+using stdlib::indoor::io::WorldResult;
 
 struct SimFloorPlan {
   cv::Mat1b image;    // map_saver grey values: 0 occupied, 205 unknown, 254 free; 600x400 cells
@@ -23,4 +25,4 @@ SimFloorPlan make_sim_office(std::uint64_t seed = 20130501);
 // map_saver-style P5 PGM bytes with a "<resolution> m/pix" comment.
 std::string encode_pgm(const cv::Mat1b& image, double resolution);
 
-}  // namespace ksmc::stdlib::indoor::io
+}  // namespace ksmc::tools::indoor_sim

@@ -10,11 +10,12 @@
 #include <fmt/format.h>
 
 #include "runtime/io/atomic_file.h"
-#include "stdlib/indoor/io/sim_floor_plan.h"
 #include "stdlib/indoor/io/world_json.h"
+#include "tools/indoor_sim/sim_floor_plan.h"
 
 int main(int argc, char** argv) {
   namespace io = ksmc::stdlib::indoor::io;
+  namespace sim = ksmc::tools::indoor_sim;
   if (argc != 2 && !(argc == 4 && std::string(argv[2]) == "--seed")) {
     std::fprintf(stderr, "usage: %s OUT_DIR [--seed N]\n", argv[0]);
     return 2;
@@ -24,9 +25,9 @@ int main(int argc, char** argv) {
     std::uint64_t seed = 20130501;
     if (argc == 4) seed = std::stoull(argv[3]);
     std::filesystem::create_directories(out);
-    const io::SimFloorPlan plan = io::make_sim_office(seed);
+    const sim::SimFloorPlan plan = sim::make_sim_office(seed);
     ksmc::runtime::io::write_file_atomic(out / "sim_office.pgm",
-                                         io::encode_pgm(plan.image, plan.resolution));
+                                         sim::encode_pgm(plan.image, plan.resolution));
     ksmc::runtime::io::write_file_atomic(
         out / "sim_office.yaml",
         fmt::format("image: sim_office.pgm\nresolution: {:.3f}\norigin: [0.0, 0.0, 0.0]\n"
