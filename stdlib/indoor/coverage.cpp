@@ -155,8 +155,8 @@ inline void CoverageGrid::bump_classes(std::size_t idx, const std::array<int, kM
   overlap_ += std::max(t - 1, 0) - std::max(t0 - 1, 0);
 }
 
-template <class PerCell>
-void CoverageGrid::sweep_units(std::span<const Footprint> fs, PerCell&& per_cell) const {
+template <class PerRun>
+void CoverageGrid::sweep_units(std::span<const Footprint> fs, PerRun&& per_run) const {
   if (fs.size() > kMaxJointFootprints)
     throw std::invalid_argument("CoverageGrid::update_units: more than " + std::to_string(kMaxJointFootprints) +
                                 " footprints");
@@ -194,40 +194,71 @@ void CoverageGrid::sweep_units(std::span<const Footprint> fs, PerCell&& per_cell
       }
       for (int v : da) any = any || v != 0;
       if (!any && dw == 0) continue;
-      for (int c = bp[j]; c < bp[j + 1]; ++c) per_cell(base + static_cast<std::size_t>(c), da, dw);
+      per_run(base + static_cast<std::size_t>(bp[j]), base + static_cast<std::size_t>(bp[j + 1]), da, dw);
     }
   }
 }
 
 void CoverageGrid::update_units(std::span<const Footprint> fs) {
-  sweep_units(fs, [this](std::size_t idx, const std::array<int, kMaxLutClasses>& da, int dw) { bump_classes(idx, da, dw); });
+  sweep_units(fs, [this](std::size_t i0, std::size_t i1, const std::array<int, kMaxLutClasses>& da, int dw) {
+    for (std::size_t idx = i0; idx < i1; ++idx) bump_classes(idx, da, dw);
+  });
 }
+
+namespace {
+// The counts that decide a cell's histogram index apart from its observed class: the areas
+// per class, the wall and the door counts (the total is their sum).
+struct CountPattern {
+  std::array<std::uint16_t, kMaxLutClasses> area;
+  std::uint16_t wall, door;
+  bool operator==(const CountPattern&) const = default;
+};
+CountPattern pattern_of(const CellCounts& c) { return {c.area, c.wall, c.door}; }
+}  // namespace
 
 CoverageGrid::Delta CoverageGrid::preview_units(std::span<const Footprint> fs) const {
   Delta d;
-  sweep_units(fs, [this, &d](std::size_t idx, const std::array<int, kMaxLutClasses>& da, int dw) {
-    CellCounts c = cells_[idx];
-    const int k0 = c.key;
-    const int t0 = c.total;
-    int t = t0, bad = 0;
-    for (std::size_t k = 0; k < da.size(); ++k) {
-      const int a = c.area[k] + da[k];
-      t += da[k];
-      bad |= a;
-      c.area[k] = static_cast<std::uint16_t>(a);
+  // Along a run the change (da, dw) is the same for every cell, and neighbouring cells mostly
+  // share their counts: the index shift and the overlap change are worked out once per
+  // pattern. The observed class adds the same 3 * observed to the index before and after, so
+  // a cell's new index is its cached key plus the pattern's shift.
+  sweep_units(fs, [this, &d](std::size_t i0, std::size_t i1, const std::array<int, kMaxLutClasses>& da, int dw) {
+    CountPattern last{};
+    bool have = false;
+    int shift = 0;
+    std::int64_t d_overlap = 0;
+    for (std::size_t idx = i0; idx < i1; ++idx) {
+      const CellCounts& now = cells_[idx];
+      const CountPattern pat = pattern_of(now);
+      if (!have || !(pat == last)) {
+        CellCounts c = now;
+        c.observed = 0;
+        const int k0 = key_of(c);
+        const int t0 = c.total;
+        int t = t0, bad = 0;
+        for (std::size_t k = 0; k < da.size(); ++k) {
+          const int a = c.area[k] + da[k];
+          t += da[k];
+          bad |= a;
+          c.area[k] = static_cast<std::uint16_t>(a);
+        }
+        const int w = c.wall + dw;
+        bad |= t | w;
+        if (bad < 0 || bad > 0xFFFF) [[unlikely]]
+          count_out_of_range();
+        c.total = static_cast<std::uint16_t>(t);
+        c.wall = static_cast<std::uint16_t>(w);
+        shift = key_of(c) - k0;
+        d_overlap = std::max(t - 1, 0) - std::max(t0 - 1, 0);
+        last = pat;
+        have = true;
+      }
+      if (shift) {
+        --d.hist[now.key];
+        ++d.hist[static_cast<std::size_t>(now.key + shift)];
+      }
+      d.overlap += d_overlap;
     }
-    const int w = c.wall + dw;
-    bad |= t | w;
-    if (bad < 0 || bad > 0xFFFF) [[unlikely]]
-      count_out_of_range();
-    c.total = static_cast<std::uint16_t>(t);
-    c.wall = static_cast<std::uint16_t>(w);
-    const int k1 = key_of(c);
-    if (k0 != k1) {
-      --d.hist[static_cast<std::size_t>(k0)];
-      ++d.hist[static_cast<std::size_t>(k1)];
-    }
-    d.overlap += std::max(t - 1, 0) - std::max(t0 - 1, 0);
   });
   return d;
 }

@@ -91,8 +91,10 @@ class CoverageGrid {
   void unit_rows(const UnitRaster* before, const UnitRaster* after, int lut_class);
   void door_rows(const SpanRaster* before, const SpanRaster* after);
   void bump(std::size_t idx, int lut_class, int d_area, int d_wall, int d_door);
-  template <class PerCell>
-  void sweep_units(std::span<const Footprint> fs, PerCell&& per_cell) const;
+  // Calls per_run(first, last, d_area, d_wall) for each run of cells [first, last) of one row
+  // whose counts change by the same amounts.
+  template <class PerRun>
+  void sweep_units(std::span<const Footprint> fs, PerRun&& per_run) const;
   void bump_classes(std::size_t idx, const std::array<int, kMaxLutClasses>& d_area, int d_wall);
 
   int rows_ = 0, cols_ = 0;

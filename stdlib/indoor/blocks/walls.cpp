@@ -1,6 +1,7 @@
 #include "stdlib/indoor/blocks/walls.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace ksmc::stdlib::indoor::blocks {
@@ -13,30 +14,48 @@ GeomClass classify_unit(const OrientedRect& r, double resolution, double big_siz
   return GeomClass::RoomLike;
 }
 
+namespace {
+struct Edge {
+  Point2 p0, p1;
+  double length, dx, dy;  // unit direction; length 0 (degenerate) is skipped
+};
+std::array<Edge, 4> edges_of(const OrientedRect& r) {
+  const auto c = r.corners();
+  std::array<Edge, 4> e;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const Point2 p0 = c[i], p1 = c[(i + 1) % 4];
+    const double l = std::hypot(p1.x - p0.x, p1.y - p0.y);
+    e[i] = {p0, p1, l, l > 0.0 ? (p1.x - p0.x) / l : 0.0, l > 0.0 ? (p1.y - p0.y) / l : 0.0};
+  }
+  return e;
+}
+}  // namespace
+
 std::optional<WallPair> connecting_walls(const OrientedRect& a, const OrientedRect& b, double dilate_cells) {
-  const auto ca = a.corners();
-  const auto cb = b.corners();
+  // Called for every unit pair of every proposal's semantic evaluation: each rectangle's
+  // edges are measured once, not once per edge pair.
+  const auto ea = edges_of(a);
+  const auto eb = edges_of(b);
   const double max_gap = 2.0 * dilate_cells + 1.0;
-  const double sin_tol = std::sin(10.0 * 3.14159265358979323846 / 180.0);
+  static const double sin_tol = std::sin(10.0 * 3.14159265358979323846 / 180.0);
   std::optional<WallPair> best;
   for (int i = 0; i < 4; ++i) {
-    const Point2 p0 = ca[static_cast<std::size_t>(i)], p1 = ca[static_cast<std::size_t>((i + 1) % 4)];
-    const double la = std::hypot(p1.x - p0.x, p1.y - p0.y);
-    if (!(la > 0.0)) continue;
-    const double dx = (p1.x - p0.x) / la, dy = (p1.y - p0.y) / la;
+    const Edge& p = ea[static_cast<std::size_t>(i)];
+    if (!(p.length > 0.0)) continue;
+    const Point2 p0 = p.p0;
+    const double la = p.length, dx = p.dx, dy = p.dy;
     for (int j = 0; j < 4; ++j) {
-      const Point2 q0 = cb[static_cast<std::size_t>(j)], q1 = cb[static_cast<std::size_t>((j + 1) % 4)];
-      const double lb = std::hypot(q1.x - q0.x, q1.y - q0.y);
-      if (!(lb > 0.0)) continue;
-      const double ex = (q1.x - q0.x) / lb, ey = (q1.y - q0.y) / lb;
-      if (std::abs(dx * ey - dy * ex) > sin_tol) continue;
+      const Edge& q = eb[static_cast<std::size_t>(j)];
+      if (!(q.length > 0.0)) continue;
+      const Point2 q0 = q.p0, q1 = q.p1;
+      if (std::abs(dx * q.dy - dy * q.dx) > sin_tol) continue;
       const double mx = 0.5 * (q0.x + q1.x) - p0.x, my = 0.5 * (q0.y + q1.y) - p0.y;
       if (std::abs(dx * my - dy * mx) > max_gap) continue;
       const double t0 = dx * (q0.x - p0.x) + dy * (q0.y - p0.y);
       const double t1 = dx * (q1.x - p0.x) + dy * (q1.y - p0.y);
       const double ov = std::min(la, std::max(t0, t1)) - std::max(0.0, std::min(t0, t1));
       if (!(ov > dilate_cells)) continue;
-      if (!best || ov > best->overlap) best = WallPair{i, j, ov, la, lb};
+      if (!best || ov > best->overlap) best = WallPair{i, j, ov, la, q.length};
     }
   }
   return best;
