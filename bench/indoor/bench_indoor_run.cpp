@@ -1,15 +1,17 @@
 // End-to-end indoor sampler throughput through the kit (IndoorModel + kernels + schedule of
 // domains/indoor.ksm, the knowledge evaluated with every proposal) on lab_b.png, single thread:
-//   bench_indoor_run [iterations] [--long N] [--window W] [--flag NAME=VALUE ...]
-// 1. Iterations per second: median of 5 runs of `iterations` (default 10000), seeds 1-5.
-// 2. Plateau: 5 runs (seeds 1-5) of at most N iterations (default 200000). The best log
+//   bench_indoor_run [iterations] [--long N] [--window W] [--runs R] [--map FILE] [--flag NAME=VALUE ...]
+// (--map: another map than lab_b.png, e.g. a Bormann map; bench/indoor/plateau_maps.sh runs
+// the plateau on each of the 20.)
+// 1. Iterations per second: median of R runs (default 5) of `iterations` (default 10000), seeds 1-R.
+// 2. Plateau: R runs (seeds 1-R) of at most N iterations (default 200000). The best log
 //    posterior is followed every iteration (engine observer) and fed to two PlateauDetectors
 //    every 100 iterations: the run is on a plateau from iteration i when
 //    best(i + W) - best(i) <= min_gain, W = 5000 by default, with min_gain = 0 (strict) and
 //    min_gain = one_cell_gain() (the smallest gain of correcting one cell over the run's tables:
 //    ln 8 for Table 3.1; the weakest table of the domain decides).
 //    A run stops once both are reached (engine cancel flag). Per run: the plateau iteration i,
-//    the wall seconds at i and when it became known (i + W); medians over the 5 runs.
+//    the wall seconds at i and when it became known (i + W); medians over the R runs.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -51,18 +53,22 @@ std::string cell(const std::optional<kit::PlateauPoint>& p, bool seconds) {
 
 int main(int argc, char** argv) {
   std::uint64_t iters = 10000, long_iters = 200000, window = 5000;
+  int runs = 5;
+  std::filesystem::path map = std::filesystem::path(KSMC_SHARED_DIR) / "data/maps/bormann_ipa/test_maps/lab_b.png";
   std::map<std::string, std::string> flags{{"resolution", "0.05"}};  // kit flags (--flag NAME=VALUE)
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--long" && i + 1 < argc) long_iters = std::stoull(argv[++i]);
     else if (a == "--window" && i + 1 < argc) window = std::stoull(argv[++i]);
+    else if (a == "--runs" && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
+    else if (a == "--map" && i + 1 < argc) map = argv[++i];
     else if (a == "--flag" && i + 1 < argc && std::string(argv[i + 1]).find('=') != std::string::npos) {
       const std::string f = argv[++i];
       flags[f.substr(0, f.find('='))] = f.substr(f.find('=') + 1);
     }
     else if (!a.empty() && a.find_first_not_of("0123456789") == std::string::npos) iters = std::stoull(a);
     else {
-      std::fprintf(stderr, "usage: bench_indoor_run [iterations] [--long N] [--window W] [--flag NAME=VALUE ...]\n");
+      std::fprintf(stderr, "usage: bench_indoor_run [iterations] [--long N] [--window W] [--runs R] [--map FILE] [--flag NAME=VALUE ...]\n");
       return 2;
     }
   }
@@ -70,7 +76,6 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "bench_indoor_run: --window must be at least 1\n");
     return 2;
   }
-  const std::filesystem::path map = std::filesystem::path(KSMC_SHARED_DIR) / "data/maps/bormann_ipa/test_maps/lab_b.png";
   if (!std::filesystem::exists(map)) {
     std::printf("bench_indoor_run: %s not found - skipped\n", map.string().c_str());
     return 0;
@@ -78,12 +83,12 @@ int main(int argc, char** argv) {
   const auto sp = spec();
   const auto setup = sp.load(input_for(sp, map, 1, flags));
   const mcmc::Engine engine(setup.model_factory, setup.kernels, setup.schedule);
-  std::printf("lab_b.png 1237x672, kit config = domains/indoor.ksm, 1 chain, 1 thread, flags:");
+  std::printf("%s, kit config = domains/indoor.ksm, 1 chain, 1 thread, flags:", map.filename().string().c_str());
   for (const auto& [k, v] : flags) std::printf(" --%s %s", k.c_str(), v.c_str());
   std::printf("\n\n");
   std::printf("| run | iterations | seconds | it/s | K(W,M) | units |\n|---|---|---|---|---|---|\n");
   std::vector<double> ips;
-  for (int r = 0; r < 5 && iters > 0; ++r) {
+  for (int r = 0; r < runs && iters > 0; ++r) {
     mcmc::EngineConfig cfg;
     cfg.iterations = iters;
     cfg.seed = 1 + static_cast<std::uint64_t>(r);
@@ -113,7 +118,7 @@ int main(int argc, char** argv) {
               "|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::vector<double> one_it, one_s, one_known, strict_it, strict_s;
   int strict_missing = 0, one_missing = 0;
-  for (int r = 0; r < 5; ++r) {
+  for (int r = 0; r < runs; ++r) {
     kit::PlateauDetector strict({window, 0.0}), loose({window, one_cell});
     std::atomic<bool> stop{false};
     double best = -std::numeric_limits<double>::infinity();
@@ -154,10 +159,10 @@ int main(int argc, char** argv) {
       ++strict_missing;
     }
   }
-  std::printf("\none-cell plateau: reached in %d of 5 runs; median iteration %.0f, median wall time %.2f s "
+  std::printf("\none-cell plateau: reached in %d of %d runs; median iteration %.0f, median wall time %.2f s "
               "(known after %.2f s)\n",
-              5 - one_missing, median(one_it), median(one_s), median(one_known));
-  std::printf("strict plateau: reached in %d of 5 runs; median iteration %.0f, median wall time %.2f s\n", 5 - strict_missing,
+              runs - one_missing, runs, median(one_it), median(one_s), median(one_known));
+  std::printf("strict plateau: reached in %d of %d runs; median iteration %.0f, median wall time %.2f s\n", runs - strict_missing, runs,
               median(strict_it), median(strict_s));
   std::printf("(medians over the runs that reached it)\n");
   return 0;
