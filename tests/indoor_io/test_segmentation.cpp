@@ -121,8 +121,35 @@ TEST_CASE("segmentation: a room no unit reaches, behind a door, is a segment of 
   CHECK(b == 5);          // a new id above every unit id
   CHECK(s(50, 120) == b);  // both sides of the table: one space
   CHECK(s(30, 110) == b);
-  CHECK(s(30, 95) == 0);   // the table
+  CHECK(s(30, 95) == b);   // the table: furniture of room B
   // Nearest-unit fill alone (the rooms joined by a door wider than 1.2 m) gives B to unit 4.
   for (int r = 5; r <= 56; ++r) g(r, 61) = static_cast<std::uint8_t>(Cell::Free);
   CHECK(render_segmentation(g, w)(10, 70) == 4);
+}
+
+TEST_CASE("segmentation: free-standing furniture gets its room, walls and furniture at a wall stay 0") {
+  // Two rooms (cols 1-8 and 10-18) with a wall at col 9; a table (3, 4)-(4, 5) free-standing in
+  // the left room, a cupboard (1, 16)-(2, 17) against the right room's top wall.
+  ClassGrid g(8, 20, static_cast<std::uint8_t>(Cell::Occupied));
+  for (int r = 1; r <= 6; ++r)
+    for (int c = 1; c <= 18; ++c)
+      if (c != 9) g(r, c) = static_cast<std::uint8_t>(Cell::Free);
+  for (int r = 3; r <= 4; ++r)
+    for (int c = 4; c <= 5; ++c) g(r, c) = static_cast<std::uint8_t>(Cell::Occupied);
+  for (int r = 1; r <= 2; ++r)
+    for (int c = 16; c <= 17; ++c) g(r, c) = static_cast<std::uint8_t>(Cell::Occupied);
+  WorldResult w;
+  w.units = {unit(1, 0.5, 0.5, 8.5, 6.5), unit(2, 9.5, 0.5, 18.5, 6.5)};
+  const cv::Mat1w s = render_segmentation(g, w);
+  CHECK(s(3, 4) == 1);  // the table
+  CHECK(s(4, 5) == 1);
+  CHECK(s(1, 16) == 0);  // the cupboard is part of the wall structure
+  CHECK(s(3, 9) == 0);   // the wall between the rooms
+  CHECK(s(0, 3) == 0);
+  // A blob whose neighbours lie in two segments (a pillar on the boundary) stays 0.
+  g(3, 9) = g(4, 9) = static_cast<std::uint8_t>(Cell::Free);
+  for (int r = 1; r <= 6; ++r)
+    if (r != 3 && r != 4) g(r, 9) = static_cast<std::uint8_t>(Cell::Free);
+  g(3, 9) = g(4, 9) = static_cast<std::uint8_t>(Cell::Occupied);
+  CHECK(render_segmentation(g, w)(3, 9) == 0);
 }

@@ -107,6 +107,53 @@ void merge_open_spaces(const WorldResult& w, cv::Mat1w& label) {
       if (label(r, c) > max_unit) label(r, c) = static_cast<std::uint16_t>(find(label(r, c)));
 }
 
+// Furniture is part of its room (the benchmark's ground truth, and a robot's map, count the
+// floor under a table as the room's): an occupied 8-connected blob of at most kMaxFurniture
+// that touches no map edge and whose 4-neighbours are all free cells of one segment gets that
+// segment. Walls are one large structure touching several segments (or unknown space), and
+// furniture standing against a wall is part of that structure, so both stay 0.
+constexpr double kMaxFurniture = 4.0;  // m^2: a large table
+
+void fill_furniture(const ClassGrid& grid, const WorldResult& w, cv::Mat1w& label) {
+  const double res = w.map.resolution > 0.0 ? w.map.resolution : 0.05;
+  const auto max_cells = static_cast<std::size_t>(kMaxFurniture / (res * res));
+  cv::Mat1b seen(grid.rows, grid.cols, static_cast<std::uint8_t>(0));
+  std::vector<std::pair<int, int>> blob, stack;
+  const auto occupied = [&grid](int r, int c) { return grid(r, c) == static_cast<std::uint8_t>(Cell::Occupied); };
+  for (int r0 = 0; r0 < grid.rows; ++r0)
+    for (int c0 = 0; c0 < grid.cols; ++c0) {
+      if (!occupied(r0, c0) || seen(r0, c0)) continue;
+      blob.clear();
+      stack.assign(1, {r0, c0});
+      seen(r0, c0) = 1;
+      bool edge = false, mixed = false;
+      int owner = 0;
+      while (!stack.empty()) {
+        const auto [r, c] = stack.back();
+        stack.pop_back();
+        blob.emplace_back(r, c);
+        if (r == 0 || c == 0 || r == grid.rows - 1 || c == grid.cols - 1) edge = true;
+        for (int dr = -1; dr <= 1; ++dr)
+          for (int dc = -1; dc <= 1; ++dc) {
+            const int nr = r + dr, nc = c + dc;
+            if ((dr == 0 && dc == 0) || nr < 0 || nc < 0 || nr >= grid.rows || nc >= grid.cols) continue;
+            if (occupied(nr, nc)) {
+              if (!seen(nr, nc)) {
+                seen(nr, nc) = 1;
+                stack.emplace_back(nr, nc);
+              }
+            } else if (dr == 0 || dc == 0) {
+              const int l = label(nr, nc);
+              if (grid(nr, nc) != static_cast<std::uint8_t>(Cell::Free) || l == 0 || (owner != 0 && l != owner)) mixed = true;
+              else owner = l;
+            }
+          }
+      }
+      if (edge || mixed || owner == 0 || blob.size() > max_cells) continue;
+      for (const auto& [r, c] : blob) label(r, c) = static_cast<std::uint16_t>(owner);
+    }
+}
+
 }  // namespace
 
 cv::Mat1w render_segmentation(const ClassGrid& grid, const WorldResult& w) {
@@ -170,6 +217,7 @@ cv::Mat1w render_segmentation(const ClassGrid& grid, const WorldResult& w) {
     }
   }
   merge_open_spaces(w, label);
+  fill_furniture(grid, w, label);
   return label;
 }
 

@@ -2,7 +2,7 @@
 // room-segmentation benchmarks read (16-bit, 0 = no room, otherwise the unit id; ids are > 0).
 //
 // Fill rule, per cell of the map:
-//   * walls (occupied) and unknown cells stay 0;
+//   * walls (occupied) and unknown cells stay 0, except free-standing furniture (last rule);
 //   * a free cell whose centre lies inside one or more units gets the unit it lies deepest
 //     inside (largest distance from the cell centre to the rectangle's boundary; ties: the
 //     unit with the nearer centre, then the smaller id). Where two units overlap, the boundary between them is then the mid line of
@@ -22,7 +22,9 @@
 //   * a new space that meets another segment over more than 2 m of free cells (4-neighbour
 //     pairs) is one space with it (the `@one_space` rule's 2 m): furniture cutting a room's
 //     core in pieces, or a unit covering part of a room open to it. Widest contact first; two
-//     units are never joined.
+//     units are never joined;
+//   * an occupied 8-connected blob of at most 4 m^2, off the map's edge, whose 4-neighbours are
+//     all free cells of one segment is furniture standing in that room: it gets the segment.
 #pragma once
 
 #include <filesystem>
