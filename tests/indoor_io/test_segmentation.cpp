@@ -1,5 +1,6 @@
-// segmentation.png's fill rule on a tiny synthetic grid: units explain the free cells inside
-// them (deepest unit wins), other free cells go to the nearest unit through free space, walls
+// segmentation.png's fill rule on small synthetic grids: units explain the free cells inside
+// them (deepest unit wins), a room no unit reaches behind a door is a segment of its own, other
+// free cells go to the nearest unit through free space, walls
 // and unknown cells stay 0, a free pocket no unit reaches stays 0.
 #include <catch2/catch.hpp>
 
@@ -97,4 +98,58 @@ TEST_CASE("segmentation.png is 16-bit with the unit ids") {
   CHECK(m.at<std::uint16_t>(2, 2) == 300);
   CHECK(m.at<std::uint16_t>(2, 9) == 300);  // through the door gap
   CHECK(m.at<std::uint16_t>(0, 0) == 0);
+}
+
+TEST_CASE("segmentation: a room no unit reaches, behind a door, is a segment of its own") {
+  // 0.05 m cells. Room A: cols 1-60, room B: cols 62-128, rows 1-60; col 61 is a wall with a
+  // 0.8 m door (rows 25-40). A table in B (rows 25-35, cols 93-97) cuts B's core (cells over
+  // 0.6 m from every wall) in two; the two halves meet over more than 2 m of free cells.
+  ClassGrid g(62, 130, static_cast<std::uint8_t>(Cell::Occupied));
+  for (int r = 1; r <= 60; ++r)
+    for (int c = 1; c <= 128; ++c)
+      if (c != 61) g(r, c) = static_cast<std::uint8_t>(Cell::Free);
+  for (int r = 25; r <= 40; ++r) g(r, 61) = static_cast<std::uint8_t>(Cell::Free);
+  for (int r = 25; r <= 35; ++r)
+    for (int c = 93; c <= 97; ++c) g(r, c) = static_cast<std::uint8_t>(Cell::Occupied);
+  WorldResult w;
+  w.map.resolution = 0.05;
+  w.units = {unit(4, 0.5, 0.5, 40.5, 60.5)};  // two thirds of room A
+  const cv::Mat1w s = render_segmentation(g, w);
+  CHECK(s(30, 20) == 4);
+  CHECK(s(30, 55) == 4);  // the rest of room A: no narrow passage between it and the unit
+  const std::uint16_t b = s(10, 70);
+  CHECK(b == 5);          // a new id above every unit id
+  CHECK(s(50, 120) == b);  // both sides of the table: one space
+  CHECK(s(30, 110) == b);
+  CHECK(s(30, 95) == b);   // the table: furniture of room B
+  // Nearest-unit fill alone (the rooms joined by a door wider than 1.2 m) gives B to unit 4.
+  for (int r = 5; r <= 56; ++r) g(r, 61) = static_cast<std::uint8_t>(Cell::Free);
+  CHECK(render_segmentation(g, w)(10, 70) == 4);
+}
+
+TEST_CASE("segmentation: free-standing furniture gets its room, walls and furniture at a wall stay 0") {
+  // Two rooms (cols 1-8 and 10-18) with a wall at col 9; a table (3, 4)-(4, 5) free-standing in
+  // the left room, a cupboard (1, 16)-(2, 17) against the right room's top wall.
+  ClassGrid g(8, 20, static_cast<std::uint8_t>(Cell::Occupied));
+  for (int r = 1; r <= 6; ++r)
+    for (int c = 1; c <= 18; ++c)
+      if (c != 9) g(r, c) = static_cast<std::uint8_t>(Cell::Free);
+  for (int r = 3; r <= 4; ++r)
+    for (int c = 4; c <= 5; ++c) g(r, c) = static_cast<std::uint8_t>(Cell::Occupied);
+  for (int r = 1; r <= 2; ++r)
+    for (int c = 16; c <= 17; ++c) g(r, c) = static_cast<std::uint8_t>(Cell::Occupied);
+  WorldResult w;
+  w.units = {unit(1, 0.5, 0.5, 8.5, 6.5), unit(2, 9.5, 0.5, 18.5, 6.5)};
+  const cv::Mat1w s = render_segmentation(g, w);
+  CHECK(s(3, 4) == 1);  // the table
+  CHECK(s(4, 5) == 1);
+  CHECK(s(1, 16) == 0);  // the cupboard is part of the wall structure
+  CHECK(s(3, 9) == 0);   // the wall between the rooms
+  CHECK(s(0, 3) == 0);
+  // A blob whose neighbours lie in two segments (a pillar on the boundary) stays 0.
+  g(3, 9) = g(4, 9) = static_cast<std::uint8_t>(Cell::Free);
+  for (int r = 1; r <= 6; ++r)
+    if (r != 3 && r != 4) g(r, 9) = static_cast<std::uint8_t>(Cell::Free);
+  g(3, 9) = g(4, 9) = static_cast<std::uint8_t>(Cell::Occupied);
+  CHECK(render_segmentation(g, w)(3, 9) == 0);
 }

@@ -21,6 +21,18 @@ Thresholds Thresholds::drawn() {
   return t;
 }
 
+std::optional<Thresholds> Thresholds::by_name(const std::string& name) {
+  if (name == "bormann") return bormann();
+  if (name == "drawn") return drawn();
+  if (name == "ros") return Thresholds{};
+  if (name == "strict") {
+    Thresholds t;
+    t.free_thresh = 5.5 / 255.0;
+    return t;
+  }
+  return std::nullopt;
+}
+
 ClassCounts count_classes(const ClassGrid& grid) {
   ClassCounts c;
   for (int r = 0; r < grid.rows; ++r) {

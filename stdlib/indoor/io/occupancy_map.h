@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,10 @@ struct Thresholds {
   // by painted_unknown. Drawn floor plans (grey walls on a grey outside) and SLAM images (one
   // light grey for unexplored space) both read right.
   static Thresholds drawn();
+  // By the names of the indoor binary's --thresholds: drawn, strict (>= 250 free, map_server's
+  // dark threshold occupied, else unknown: SLAM images), ros (map_server) or bormann; nullopt
+  // for any other name.
+  static std::optional<Thresholds> by_name(const std::string& name);
 };
 
 // The share of the image the unexplored-space paint must cover (Thresholds::painted_unknown).

@@ -1,4 +1,4 @@
-// ksmc-render-world MAP WORLD_JSON OUT_DIR [--resolution R]
+// ksmc-render-world MAP WORLD_JSON OUT_DIR [--resolution R] [--thresholds drawn|strict|ros|bormann]
 // Re-renders labels.png, segmentation.png, overlay.png and graph.dot for a world.json (a result of an earlier run or
 // a ground-truth file) over its map. Useful to look at examples/indoor/sim_office_truth.json.
 #include <cstdio>
@@ -19,14 +19,23 @@ int main(int argc, char** argv) {
   CLI::App app{"Render labels.png, segmentation.png, overlay.png and graph.dot of a world.json over its map"};
   std::string map_path, world_path, out_dir;
   double resolution = 0.0;
+  std::string thresholds = "drawn";
   app.add_option("map", map_path, "map_server YAML, PGM or PNG")->required();
   app.add_option("world", world_path, "world.json")->required();
   app.add_option("out", out_dir, "output folder (created if missing)")->required();
   app.add_option("--resolution", resolution, "m per cell (overrides the YAML)")->check(CLI::PositiveNumber);
+  app.add_option("--thresholds", thresholds,
+                 "grey values of a bare image, as the indoor binary's --thresholds: drawn (its default), strict, ros or bormann");
   CLI11_PARSE(app, argc, argv);
   try {
     io::ImageLoadOptions opts;
     if (resolution > 0.0) opts.resolution = resolution;
+    const auto th = io::Thresholds::by_name(thresholds);
+    if (!th) {
+      std::fprintf(stderr, "--thresholds must be 'drawn', 'strict', 'ros' or 'bormann', got '%s'\n", thresholds.c_str());
+      return 2;
+    }
+    opts.thresholds = *th;
     const io::OccupancyMap m = io::load_map(map_path, opts);
     for (const auto& w : m.warnings) std::fprintf(stderr, "%s\n", w.c_str());
     const io::WorldResult w = io::read_world_json(world_path);

@@ -5,8 +5,12 @@
 #include <cstdint>
 #include <deque>
 #include <limits>
+#include <map>
 #include <stdexcept>
+#include <utility>
 #include <vector>
+
+#include <opencv2/imgproc.hpp>
 
 #include "runtime/io/atomic_file.h"
 #include "stdlib/indoor/io/quad.h"
@@ -14,6 +18,143 @@
 #include "stdlib/indoor/io/world_json.h"
 
 namespace ksmc::stdlib::indoor::io {
+
+namespace {
+
+// The spaces no unit reaches: the free cells farther than kPassageHalfWidth from every wall or
+// unknown cell (the map's free space with its passages narrower than a door cut off), grouped
+// in 4-connected components. A component that holds no cell a unit explains, and is at least
+// kMinCoreArea large, is a space of its own behind a narrow passage: its cells get a new id
+// (above every unit id) and seed the nearest-space fill with the units. Without this the fill
+// gives a whole uncovered room, through its door, to a unit of the next room.
+constexpr double kPassageHalfWidth = 0.6;  // m: passages up to 1.2 m wide (a door and its frame)
+constexpr double kMinCoreArea = 0.5;       // m^2 of cells farther than that from every wall
+
+void seed_uncovered_spaces(const ClassGrid& grid, const WorldResult& w, cv::Mat1w& label) {
+  const double res = w.map.resolution > 0.0 ? w.map.resolution : 0.05;
+  cv::Mat1b free_mask(grid.rows, grid.cols);
+  for (int r = 0; r < grid.rows; ++r)
+    for (int c = 0; c < grid.cols; ++c) free_mask(r, c) = grid(r, c) == static_cast<std::uint8_t>(Cell::Free) ? 255 : 0;
+  cv::Mat1f dist;
+  cv::distanceTransform(free_mask, dist, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  const cv::Mat1b core = dist > static_cast<float>(kPassageHalfWidth / res);
+  cv::Mat1i comp;
+  const int n = cv::connectedComponents(core, comp, 4, CV_32S);
+  std::vector<char> covered(static_cast<std::size_t>(n), 0);
+  std::vector<long> area(static_cast<std::size_t>(n), 0);
+  for (int r = 0; r < grid.rows; ++r)
+    for (int c = 0; c < grid.cols; ++c) {
+      const auto k = static_cast<std::size_t>(comp(r, c));
+      if (k == 0) continue;
+      ++area[k];
+      if (label(r, c) != 0) covered[k] = 1;
+    }
+  int next = 0;
+  for (const auto& u : w.units) next = std::max(next, u.id);
+  const double min_cells = kMinCoreArea / (res * res);
+  std::vector<int> id(static_cast<std::size_t>(n), 0);
+  for (int k = 1; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    if (!covered[i] && static_cast<double>(area[i]) >= min_cells && next < 0xffff) id[i] = ++next;
+  }
+  for (int r = 0; r < grid.rows; ++r)
+    for (int c = 0; c < grid.cols; ++c)
+      if (const int k = id[static_cast<std::size_t>(comp(r, c))]; k != 0) label(r, c) = static_cast<std::uint16_t>(k);
+}
+
+// A space of its own (seed_uncovered_spaces) that meets another segment over more than
+// kOpenJoin of free cells is one space with it, as the `@one_space` rule of domains/indoor.ksm
+// says of units (a free run over 2 m): furniture cuts an uncovered room's core into pieces, a
+// door does not join two rooms that wide. Pairs are joined widest contact first; two units
+// are never joined.
+constexpr double kOpenJoin = 2.0;  // m
+
+void merge_open_spaces(const WorldResult& w, cv::Mat1w& label) {
+  int max_unit = 0;
+  for (const auto& u : w.units) max_unit = std::max(max_unit, u.id);
+  std::map<std::pair<int, int>, long> contact;  // (smaller, larger id) -> 4-neighbour cell pairs
+  const auto touch = [&](int a, int b) {
+    if (a == 0 || b == 0 || a == b || std::max(a, b) <= max_unit) return;
+    ++contact[{std::min(a, b), std::max(a, b)}];
+  };
+  for (int r = 0; r < label.rows; ++r)
+    for (int c = 0; c < label.cols; ++c) {
+      if (c + 1 < label.cols) touch(label(r, c), label(r, c + 1));
+      if (r + 1 < label.rows) touch(label(r, c), label(r + 1, c));
+    }
+  const double res = w.map.resolution > 0.0 ? w.map.resolution : 0.05;
+  std::vector<std::pair<long, std::pair<int, int>>> joins;
+  for (const auto& [ab, n] : contact)
+    if (static_cast<double>(n) * res > kOpenJoin) joins.push_back({n, ab});
+  std::stable_sort(joins.begin(), joins.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+  std::map<int, int> parent;  // union-find over ids; a set's root is its unit when it has one
+  const auto find = [&parent](int a) {
+    while (true) {
+      const auto it = parent.find(a);
+      if (it == parent.end() || it->second == a) return a;
+      a = it->second;
+    }
+  };
+  for (const auto& [n, ab] : joins) {
+    const int ra = find(ab.first), rb = find(ab.second);
+    if (ra == rb || (ra <= max_unit && rb <= max_unit)) continue;
+    if (ra <= max_unit || (rb > max_unit && ra < rb)) parent[rb] = ra;
+    else parent[ra] = rb;
+  }
+  if (parent.empty()) return;
+  for (int r = 0; r < label.rows; ++r)
+    for (int c = 0; c < label.cols; ++c)
+      if (label(r, c) > max_unit) label(r, c) = static_cast<std::uint16_t>(find(label(r, c)));
+}
+
+// Furniture is part of its room (the benchmark's ground truth, and a robot's map, count the
+// floor under a table as the room's): an occupied 8-connected blob of at most kMaxFurniture
+// that touches no map edge and whose 4-neighbours are all free cells of one segment gets that
+// segment. Walls are one large structure touching several segments (or unknown space), and
+// furniture standing against a wall is part of that structure, so both stay 0.
+constexpr double kMaxFurniture = 4.0;  // m^2: a large table
+
+void fill_furniture(const ClassGrid& grid, const WorldResult& w, cv::Mat1w& label) {
+  const double res = w.map.resolution > 0.0 ? w.map.resolution : 0.05;
+  const auto max_cells = static_cast<std::size_t>(kMaxFurniture / (res * res));
+  cv::Mat1b seen(grid.rows, grid.cols, static_cast<std::uint8_t>(0));
+  std::vector<std::pair<int, int>> blob, stack;
+  const auto occupied = [&grid](int r, int c) { return grid(r, c) == static_cast<std::uint8_t>(Cell::Occupied); };
+  for (int r0 = 0; r0 < grid.rows; ++r0)
+    for (int c0 = 0; c0 < grid.cols; ++c0) {
+      if (!occupied(r0, c0) || seen(r0, c0)) continue;
+      blob.clear();
+      stack.assign(1, {r0, c0});
+      seen(r0, c0) = 1;
+      bool edge = false, mixed = false;
+      int owner = 0;
+      while (!stack.empty()) {
+        const auto [r, c] = stack.back();
+        stack.pop_back();
+        blob.emplace_back(r, c);
+        if (r == 0 || c == 0 || r == grid.rows - 1 || c == grid.cols - 1) edge = true;
+        for (int dr = -1; dr <= 1; ++dr)
+          for (int dc = -1; dc <= 1; ++dc) {
+            const int nr = r + dr, nc = c + dc;
+            if ((dr == 0 && dc == 0) || nr < 0 || nc < 0 || nr >= grid.rows || nc >= grid.cols) continue;
+            if (occupied(nr, nc)) {
+              if (!seen(nr, nc)) {
+                seen(nr, nc) = 1;
+                stack.emplace_back(nr, nc);
+              }
+            } else if (dr == 0 || dc == 0) {
+              const int l = label(nr, nc);
+              if (grid(nr, nc) != static_cast<std::uint8_t>(Cell::Free) || l == 0 || (owner != 0 && l != owner)) mixed = true;
+              else owner = l;
+            }
+          }
+      }
+      if (edge || mixed || owner == 0 || blob.size() > max_cells) continue;
+      for (const auto& [r, c] : blob) label(r, c) = static_cast<std::uint16_t>(owner);
+    }
+}
+
+}  // namespace
 
 cv::Mat1w render_segmentation(const ClassGrid& grid, const WorldResult& w) {
   validate_world(w, false);
@@ -57,6 +198,7 @@ cv::Mat1w render_segmentation(const ClassGrid& grid, const WorldResult& w) {
   for (int r = 0; r < grid.rows; ++r)
     for (int c = 0; c < grid.cols; ++c)
       if (const int o = owner(r, c); o >= 0) label(r, c) = static_cast<std::uint16_t>(w.units[static_cast<std::size_t>(o)].id);
+  seed_uncovered_spaces(grid, w, label);
   // Multi-source BFS over 4-connected free cells from every labelled cell, row-major order.
   std::deque<std::pair<int, int>> queue;
   for (int r = 0; r < grid.rows; ++r)
@@ -74,6 +216,8 @@ cv::Mat1w render_segmentation(const ClassGrid& grid, const WorldResult& w) {
       queue.emplace_back(nr, nc);
     }
   }
+  merge_open_spaces(w, label);
+  fill_furniture(grid, w, label);
   return label;
 }
 

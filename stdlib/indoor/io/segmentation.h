@@ -2,18 +2,29 @@
 // room-segmentation benchmarks read (16-bit, 0 = no room, otherwise the unit id; ids are > 0).
 //
 // Fill rule, per cell of the map:
-//   * walls (occupied) and unknown cells stay 0;
+//   * walls (occupied) and unknown cells stay 0, except free-standing furniture (last rule);
 //   * a free cell whose centre lies inside one or more units gets the unit it lies deepest
 //     inside (largest distance from the cell centre to the rectangle's boundary; ties: the
 //     unit with the nearer centre, then the smaller id). Where two units overlap, the boundary between them is then the mid line of
 //     the overlap, a straight line, and a thin unit lying across a wall or along a big room's
 //     edge (whose cells are never deep inside it) cannot cut a strip out of the room;
-//   * every other free cell gets the unit nearest to it through free space: a multi-source
+//   * a space no unit reaches gets an id of its own (above every unit id): the free cells over
+//     0.6 m from every wall or unknown cell, in 4-connected components (passages up to 1.2 m
+//     wide, doors, cut them apart), of which a component with no cell inside a unit and at
+//     least 0.5 m^2 large seeds a new segment. Without it the fill below gives a whole room no
+//     unit covers, through its door, to a unit of the next room;
+//   * every other free cell gets the unit or space nearest to it through free space: a multi-source
 //     breadth-first search over 4-connected free cells from the cells labelled so far (ties:
 //     the unit reached first in row-major seed order, so the result is deterministic). The
 //     search moves only between edge-adjacent free cells, so it never leaks through the
 //     diagonal gap between two wall pixels that touch at a corner;
-//   * free cells with no path to any unit (a free component without a unit) stay 0.
+//   * free cells with no path to any unit (a free component without a unit or space) stay 0;
+//   * a new space that meets another segment over more than 2 m of free cells (4-neighbour
+//     pairs) is one space with it (the `@one_space` rule's 2 m): furniture cutting a room's
+//     core in pieces, or a unit covering part of a room open to it. Widest contact first; two
+//     units are never joined;
+//   * an occupied 8-connected blob of at most 4 m^2, off the map's edge, whose 4-neighbours are
+//     all free cells of one segment is furniture standing in that room: it gets the segment.
 #pragma once
 
 #include <filesystem>

@@ -234,17 +234,9 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
     opts.resolution = r;
   }
   const std::string th = in.flags.text("thresholds");
-  if (th == "bormann") {
-    opts.thresholds = io::Thresholds::bormann();
-  } else if (th == "drawn") {
-    opts.thresholds = io::Thresholds::drawn();
-  } else if (th == "strict") {
-    // SLAM images (gmapping / Radish PNGs) paint unexplored space light grey: only near-white
-    // (>= 250) is free, map_server's dark threshold gives occupied, the rest is unknown.
-    opts.thresholds.free_thresh = 5.5 / 255.0;
-  } else if (th != "ros") {
-    throw cli::UsageError("--thresholds must be 'drawn', 'strict', 'ros' or 'bormann', got '" + th + "'");
-  }
+  const auto thresholds = io::Thresholds::by_name(th);
+  if (!thresholds) throw cli::UsageError("--thresholds must be 'drawn', 'strict', 'ros' or 'bormann', got '" + th + "'");
+  opts.thresholds = *thresholds;
   auto map = std::make_shared<io::OccupancyMap>(io::load_map(path, opts));
   for (const auto& w : map->warnings) std::fprintf(stderr, "%s\n", w.c_str());  // also in summary.json
   runtime::io::throw_if_cancelled("indoor: after reading the map");  // large maps: each step takes long
