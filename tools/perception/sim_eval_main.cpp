@@ -1,4 +1,4 @@
-// ksmc-perception-sim [--scenes N] [--objects A..B] [--seed S] [--sigma M] [--missing R] [--stride K] [--verbose]
+// ksmc-perception-sim [--scenes N] [--objects A..B] [--seed S] [--sigma M] [--missing R] [--stride K] [--upright] [--verbose]
 // Renders depth clouds of generated scenes (three families), runs the point-cloud front end
 // and prints, per family, how well the boxes are recovered (camera frame, nearest-centre
 // matching within 5 cm). Exit codes: 0 ok, 1 generation failure, 2 bad arguments.
@@ -36,11 +36,16 @@ int main(int argc, char** argv) {
   double sigma = 0.001, missing = 0.0;
   int stride = 2;
   bool verbose = false;
+  bool upright = false;  // the upright fit only (no tilted boxes): the figures before tilted_box.h
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
       if (a == "--verbose") {
         verbose = true;
+        continue;
+      }
+      if (a == "--upright") {
+        upright = true;
         continue;
       }
       if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
@@ -79,6 +84,7 @@ int main(int argc, char** argv) {
         const pc::SimFrame f = pc::simulate_frame(ksmc::stdlib::tabletop::sim::scene_seed(seed, static_cast<std::uint64_t>(s)), fam);
         pc::CloudOptions opt;
         opt.camera = pc::scene_camera(f.scene.camera);
+        opt.fit.tilted = !upright;
         const pc::CloudScene cs = pc::scene_from_points(f.cloud, fmt::format("{} scene {}", fam.name, s), opt);
         const pc::TruthReport rep = pc::evaluate_same_frame(pc::camera_frame_boxes(cs.scene), f.truth, 0.05);
         boxes += static_cast<int>(f.truth.size());
