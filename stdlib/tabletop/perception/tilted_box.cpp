@@ -54,6 +54,34 @@ std::vector<Face>::const_iterator tilted_seed(const Points& points, const std::v
   });
 }
 
+// A leaning box rests on the table: when its lowest corner is above it, the thinnest
+// extent (the one the sensor saw least of: a single face gives no thickness) is grown on
+// its lower side until that corner reaches the table, unless the grown part would take
+// in points of the cluster that are off the box (something is there).
+void rest_on_table(const Points& points, const Eigen::Matrix3d& axes, Eigen::Vector3d& lo, Eigen::Vector3d& hi,
+                   const TiltOptions& o) {
+  double low = 0.0;
+  for (int k = 0; k < 3; ++k) low += axes(2, k) >= 0 ? lo(k) * axes(2, k) : hi(k) * axes(2, k);
+  if (low <= o.support_gap) return;
+  int k = 0;
+  for (int j = 1; j < 3; ++j)
+    if (hi(j) - lo(j) < hi(k) - lo(k)) k = j;
+  const double slope = std::abs(axes(2, k));
+  if (slope < 0.1) return;
+  const double grow = std::min(low / slope, o.max_support_growth);
+  Eigen::Vector3d glo = lo, ghi = hi;
+  (axes(2, k) > 0 ? glo(k) : ghi(k)) += axes(2, k) > 0 ? -grow : grow;
+  std::size_t inside = 0;
+  for (const auto& p : points) {
+    const Eigen::Vector3d c = axes.transpose() * p;
+    const bool in_grown = ((c - ghi).cwiseMax(glo - c)).maxCoeff() < -o.own_margin;
+    const bool in_box = ((c - hi).cwiseMax(lo - c)).maxCoeff() <= o.own_margin;
+    inside += in_grown && !in_box;
+  }
+  if (inside > o.max_support_points) return;
+  lo = glo, hi = ghi;
+}
+
 }  // namespace
 
 void canonical_axes(Eigen::Matrix3d& axes, Eigen::Vector3d& size) {
@@ -117,6 +145,7 @@ std::optional<TiltedFit> fit_tilted_box(const Points& points, const TiltOptions&
     lo(k) = quantile(s, o.trim);
     hi(k) = quantile(s, 1.0 - o.trim);
   }
+  rest_on_table(points, axes, lo, hi, o);
   Eigen::Vector3d size = (hi - lo).cwiseMax(o.min_size);
   const Eigen::Vector3d centre = axes * (0.5 * (lo + hi));
   canonical_axes(axes, size);

@@ -27,6 +27,9 @@ struct TiltOptions {
   double trim = 0.003;              // quantile pulled in on each side of each extent
   double own_margin = 0.008;        // m, cluster points this close to the box are its own
   double min_size = 0.005;          // m
+  double support_gap = 0.006;       // m; a box whose lowest corner is higher is grown to the table
+  double max_support_growth = 0.15; // m
+  std::size_t max_support_points = 10; // ... unless the grown part holds more cluster points than this
   double probe_voxel = 0.008;       // m; the faces are first looked for on a copy this sparse
 };
 
