@@ -34,6 +34,11 @@ struct PoseOptions {
   double cluster_angle = 0.1745;      // rad (10 deg)
   int min_matches = 5;
   int min_inliers = 6;
+  // Fewer inliers, down to this many, still detect the object when they fit its pose
+  // tightly (rms) and the winning cluster holds several hypotheses: partly hidden boxes.
+  int min_verified_inliers = 5;
+  double verified_rms = 0.0015;       // m
+  int verified_cluster = 3;           // hypotheses
   std::uint64_t seed = 1;
 };
 
