@@ -8,8 +8,10 @@
 // * the hypotheses are clustered (translation and rotation distance); the biggest cluster
 //   wins, its best hypothesis (most inliers) is the RANSAC consensus; the pose is refined by
 //   Umeyama on the inliers until the inlier set is stable;
-// * the object is detected when at least `min_inliers` agree; its inliers are the keypoints
-//   recorded for the reprojection likelihood (left pixel + model point).
+// * the object is detected when at least `min_inliers` agree, or `min_verified_inliers`
+//   that fit within `verified_rms` with `verified_cluster` hypotheses behind them; its
+//   inliers are the keypoints recorded for the reprojection likelihood (left pixel +
+//   model point).
 // One instance per database object. Deterministic: seeded per object.
 #pragma once
 
