@@ -2,6 +2,7 @@
 // matched keypoints is found with its centre within 1 cm and its rotation within 3 degrees.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 
@@ -38,9 +39,41 @@ TEST_CASE("stereo: poses of textured boxes recovered from a synthesised pair", "
       CHECK(dc < 0.01);
       CHECK(da < 3.0);
       CHECK(o.keypoints_image.size() == o.keypoints_model.size());
-      CHECK(o.keypoints_image.size() >= 6);
+      CHECK(o.keypoints_image.size() >= static_cast<std::size_t>(st::PoseOptions{}.min_verified_inliers));
     }
   }
+}
+
+TEST_CASE("stereo: a partly hidden box with 5 tight inliers is found, boxes absent from the view are not",
+          "[stereo]") {
+  // The benchmark's first 10-box scene; only boxes 0-6 are rendered, the database holds all 10.
+  const std::uint64_t seed = 200;
+  const auto boxes = ts::grid_boxes(10, seed);
+  const std::vector<ts::sy::TexturedBox> shown(boxes.begin(), boxes.begin() + 7);
+  const ts::sy::Rig rig = ts::standard_rig();
+  const auto pair = ts::sy::render_pair(rig, shown, seed);
+  const auto dir = ts::fresh_dir("verified");
+  for (const auto& b : boxes) ts::sy::write_object_folder(dir / "db", b);
+  const auto db = st::load_database(dir / "db");
+  const auto calib = ts::sy::rig_calib(rig);
+  auto found = [&](const st::StereoSceneOptions& options) {
+    const st::StereoScene s = st::scene_from_images(pair.left, pair.right, "l", "r", calib, db, options);
+    std::vector<std::size_t> in;
+    for (std::size_t i = 0; i < s.scene.objects.size(); ++i) {
+      const auto k = static_cast<std::size_t>(s.detections[i].object);
+      in.push_back(k);
+      CHECK(k < shown.size());  // no box that is not in the view
+      CHECK((s.scene.objects[i].pose.t - boxes[k].pose.t).norm() < 0.01);
+    }
+    return in;
+  };
+  st::StereoSceneOptions strict;
+  strict.pose.min_verified_inliers = strict.pose.min_inliers;  // the verified path off
+  const auto with = found({}), without = found(strict);
+  INFO("found " << with.size() << " with the verified path, " << without.size() << " without");
+  CHECK(with.size() == without.size() + 1);
+  CHECK(std::find(with.begin(), with.end(), 6u) != with.end());     // box6: 5 inliers, rms 0.7 mm
+  CHECK(std::find(without.begin(), without.end(), 6u) == without.end());
 }
 
 TEST_CASE("stereo: the front end is deterministic and its scene.json reads back", "[stereo]") {

@@ -12,15 +12,6 @@ double cross(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Ve
   return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
 }
 
-// Quantile q of `values` (sorted in place), linear interpolation.
-double quantile(std::vector<double>& values, double q) {
-  std::sort(values.begin(), values.end());
-  const double pos = q * static_cast<double>(values.size() - 1);
-  const auto lo = static_cast<std::size_t>(std::floor(pos));
-  const std::size_t hi = std::min(lo + 1, values.size() - 1);
-  return values[lo] + (pos - static_cast<double>(lo)) * (values[hi] - values[lo]);
-}
-
 // Turns (u, half) into the canonical form with the angle of u in [0, 90 deg).
 void canonicalise(Rect2& r) {
   for (int k = 0; k < 4; ++k) {
@@ -32,6 +23,14 @@ void canonicalise(Rect2& r) {
 }
 
 }  // namespace
+
+double quantile(std::vector<double>& values, double q) {
+  std::sort(values.begin(), values.end());
+  const double pos = q * static_cast<double>(values.size() - 1);
+  const auto lo = static_cast<std::size_t>(std::floor(pos));
+  const std::size_t hi = std::min(lo + 1, values.size() - 1);
+  return values[lo] + (pos - static_cast<double>(lo)) * (values[hi] - values[lo]);
+}
 
 std::vector<Eigen::Vector2d> convex_hull(std::vector<Eigen::Vector2d> p) {
   std::sort(p.begin(), p.end(), [](const auto& a, const auto& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });

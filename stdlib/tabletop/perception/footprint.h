@@ -19,6 +19,9 @@ struct Rect2 {
   [[nodiscard]] double area() const { return 4.0 * half.x() * half.y(); }
 };
 
+// Quantile q in [0, 1] of `values` (at least one; sorted in place), linear interpolation.
+double quantile(std::vector<double>& values, double q);
+
 // Counter-clockwise hull without (nearly, 1e-12 m^2) collinear points (Andrew's monotone chain). Fewer than
 // three distinct points give the distinct points.
 std::vector<Eigen::Vector2d> convex_hull(std::vector<Eigen::Vector2d> points);

@@ -34,9 +34,10 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
   std::vector<Points> clusters = std::move(out.object_points);
   out.object_points.clear();
   stage(fmt::format("fitting boxes to {} clusters", clusters.size()));
+  ClusterBoxOptions fit = options.fit;
+  fit.parts = options.clusters;  // the rest after a tilted box is split as the cloud was
   for (std::size_t c = 0; c < clusters.size(); ++c) {
-    const std::vector<UprightBox> boxes = options.split_stacks ? fit_stacked_boxes(clusters[c], options.box, options.stacks)
-                                                               : std::vector<UprightBox>{fit_upright_box(clusters[c], options.box)};
+    const std::vector<UprightBox> boxes = fit_cluster_boxes(clusters[c], fit);
     for (const UprightBox& box : boxes) {
       SceneObject o;
       o.id = options.id_prefix + std::to_string(s.objects.size());

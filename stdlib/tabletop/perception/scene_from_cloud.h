@@ -12,6 +12,7 @@
 
 #include "stdlib/tabletop/perception/box_fit.h"
 #include "stdlib/tabletop/perception/cloud_io.h"
+#include "stdlib/tabletop/perception/cluster_boxes.h"
 #include "stdlib/tabletop/perception/clusters.h"
 #include "stdlib/tabletop/perception/stack_split.h"
 #include "stdlib/tabletop/perception/table_plane.h"
@@ -23,9 +24,7 @@ struct CloudOptions {
   Units units = Units::m;
   TableOptions table;
   ClusterOptions clusters;
-  BoxFitOptions box;
-  bool split_stacks = true;  // several boxes per cluster (stack_split.h)
-  StackOptions stacks;
+  ClusterBoxOptions fit;     // boxes per cluster: tilted, stacked, upright (cluster_boxes.h)
   Camera camera{615.0, 615.0, 320.0, 240.0, 640, 480};  // written to scene.json (overlay)
   double table_thickness = 0.05;                        // m, the slab below z = 0
   std::string id_prefix = "obj_";

@@ -159,15 +159,18 @@ ObjectDetection estimate_pose(const StereoPoints& pts, const ObjectModel& model,
     if (next == in) break;
     in = std::move(next);
   }
-  if (static_cast<int>(in.size()) < o.min_inliers) return d;
-  d.pose = pose;
+  const int count = static_cast<int>(in.size());
+  if (count < std::min(o.min_inliers, o.min_verified_inliers) || count < 3) return d;
   double ss = 0.0;
+  for (int k : in) ss += (pose * mod(k) - scene(k)).squaredNorm();
+  const double rms = std::sqrt(ss / static_cast<double>(count));
+  if (count < o.min_inliers && (rms > o.verified_rms || d.cluster_size < o.verified_cluster)) return d;
+  d.pose = pose;
+  d.rms = rms;
   for (int k : in) {
     d.inliers.push_back(matches[static_cast<std::size_t>(k)].point);
     d.model.push_back(mod(k));
-    ss += (pose * mod(k) - scene(k)).squaredNorm();
   }
-  d.rms = std::sqrt(ss / static_cast<double>(in.size()));
   return d;
 }
 

@@ -8,8 +8,10 @@
 // * the hypotheses are clustered (translation and rotation distance); the biggest cluster
 //   wins, its best hypothesis (most inliers) is the RANSAC consensus; the pose is refined by
 //   Umeyama on the inliers until the inlier set is stable;
-// * the object is detected when at least `min_inliers` agree; its inliers are the keypoints
-//   recorded for the reprojection likelihood (left pixel + model point).
+// * the object is detected when at least `min_inliers` agree, or `min_verified_inliers`
+//   that fit within `verified_rms` with `verified_cluster` hypotheses behind them; its
+//   inliers are the keypoints recorded for the reprojection likelihood (left pixel +
+//   model point).
 // One instance per database object. Deterministic: seeded per object.
 #pragma once
 
@@ -34,6 +36,11 @@ struct PoseOptions {
   double cluster_angle = 0.1745;      // rad (10 deg)
   int min_matches = 5;
   int min_inliers = 6;
+  // Fewer inliers, down to this many, still detect the object when they fit its pose
+  // tightly (rms) and the winning cluster holds several hypotheses: partly hidden boxes.
+  int min_verified_inliers = 5;
+  double verified_rms = 0.0015;       // m
+  int verified_cluster = 3;           // hypotheses
   std::uint64_t seed = 1;
 };
 

@@ -1,0 +1,154 @@
+#include "stdlib/tabletop/perception/planar_faces.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+
+#include <Eigen/Eigenvalues>
+
+namespace ksmc::stdlib::tabletop::perception {
+
+namespace {
+
+long cell_of(double v, double r) { return std::lround(std::floor(v / r)); }
+
+}  // namespace
+
+PointGrid::PointGrid(const Points& points, double radius) : points_(points), radius_(radius) {
+  cells_.reserve(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto& p = points[i];
+    cells_.emplace_back(key(cell_of(p.x(), radius), cell_of(p.y(), radius), cell_of(p.z(), radius)), static_cast<int>(i));
+  }
+  std::sort(cells_.begin(), cells_.end());
+}
+
+std::uint64_t PointGrid::key(long x, long y, long z) const {
+  // 21 bits per axis (offset): +-10 km at 1 cm cells, far beyond any table.
+  const auto u = [](long v) { return static_cast<std::uint64_t>(v + (1L << 20)) & ((1ULL << 21) - 1); };
+  return (u(x) << 42) | (u(y) << 21) | u(z);
+}
+
+void PointGrid::neighbours(const Eigen::Vector3d& p, std::vector<int>& out) const {
+  out.clear();
+  const long cx = cell_of(p.x(), radius_), cy = cell_of(p.y(), radius_), cz = cell_of(p.z(), radius_);
+  const double r2 = radius_ * radius_;
+  // The three cells along z of one (x, y) column are adjacent in key order: one search each.
+  for (long dx = -1; dx <= 1; ++dx)
+    for (long dy = -1; dy <= 1; ++dy) {
+      const std::uint64_t first = key(cx + dx, cy + dy, cz - 1), last = key(cx + dx, cy + dy, cz + 1);
+      for (auto it = std::lower_bound(cells_.begin(), cells_.end(), std::make_pair(first, -1));
+           it != cells_.end() && it->first <= last; ++it)
+        if ((points_[static_cast<std::size_t>(it->second)] - p).squaredNorm() <= r2) out.push_back(it->second);
+    }
+}
+
+std::vector<Face> planar_faces(const Points& points, const FaceOptions& o) {
+  const std::size_t n = points.size();
+  std::vector<Eigen::Vector3d> normal(n, Eigen::Vector3d::UnitZ());
+  std::vector<double> curvature(n, 1.0);
+  std::vector<int> nb;
+  {
+    const PointGrid grid(points, o.normal_radius);
+    for (std::size_t i = 0; i < n; ++i) {
+      grid.neighbours(points[i], nb);
+      if (nb.size() < 5) continue;
+      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+      for (int j : nb) mean += points[static_cast<std::size_t>(j)];
+      mean /= static_cast<double>(nb.size());
+      Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+      for (int j : nb) {
+        const Eigen::Vector3d d = points[static_cast<std::size_t>(j)] - mean;
+        cov += d * d.transpose();
+      }
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
+      const double trace = es.eigenvalues().sum();
+      if (trace <= 0.0) continue;
+      curvature[i] = es.eigenvalues()(0) / trace;
+      normal[i] = es.eigenvectors().col(0);
+    }
+  }
+  // Seeds in order of increasing curvature (flattest first); stable for determinism.
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return curvature[static_cast<std::size_t>(a)] < curvature[static_cast<std::size_t>(b)]; });
+  const double cos_max = std::cos(o.max_angle_deg * 3.14159265358979323846 / 180.0);
+  const PointGrid grid(points, o.grow_radius);
+  std::vector<char> taken(n, 0), tried(n, 0);
+  std::vector<Face> faces;
+  for (int seed : order) {
+    const auto s = static_cast<std::size_t>(seed);
+    if (taken[s] || tried[s] || curvature[s] > o.max_curvature) continue;
+    taken[s] = 1;
+    std::vector<int> region{seed};
+    Eigen::Vector3d sum = normal[s];
+    for (std::size_t k = 0; k < region.size(); ++k) {
+      const Eigen::Vector3d axis = sum.normalized();
+      grid.neighbours(points[static_cast<std::size_t>(region[k])], nb);
+      for (int j : nb) {
+        const auto u = static_cast<std::size_t>(j);
+        if (taken[u] || curvature[u] > o.max_curvature) continue;
+        const double c = normal[u].dot(axis);
+        if (std::abs(c) < cos_max) continue;
+        taken[u] = 1;
+        region.push_back(j);
+        sum += c < 0 ? -normal[u] : normal[u];
+      }
+    }
+    if (region.size() < o.min_points) {
+      // A small patch: its points stay free for other faces but seed none (no rework).
+      for (int j : region) taken[static_cast<std::size_t>(j)] = 0, tried[static_cast<std::size_t>(j)] = 1;
+      continue;
+    }
+    Face f;
+    f.normal = sum.normalized();
+    std::sort(region.begin(), region.end());
+    for (int j : region) f.centroid += points[static_cast<std::size_t>(j)];
+    f.centroid /= static_cast<double>(region.size());
+    f.points = std::move(region);
+    faces.push_back(std::move(f));
+  }
+  // Edges: points near an edge have mixed normals and join no face above; each face takes
+  // the free points next to it that lie on its plane, so that faces reach the box's edges.
+  std::stable_sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) {
+    return a.points.size() > b.points.size() || (a.points.size() == b.points.size() && a.points.front() < b.points.front());
+  });
+  for (std::size_t i = 0; i < n; ++i) taken[i] = 0;
+  for (const Face& f : faces)
+    for (int j : f.points) taken[static_cast<std::size_t>(j)] = 1;
+  for (Face& f : faces) {
+    for (std::size_t k = 0; k < f.points.size(); ++k) {
+      grid.neighbours(points[static_cast<std::size_t>(f.points[k])], nb);
+      for (int j : nb) {
+        const auto u = static_cast<std::size_t>(j);
+        if (taken[u] || std::abs((points[u] - f.centroid).dot(f.normal)) > o.plane_tolerance) continue;
+        taken[u] = 1;
+        f.points.push_back(j);
+      }
+    }
+    std::sort(f.points.begin(), f.points.end());
+  }
+  std::stable_sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) {
+    return a.points.size() > b.points.size() || (a.points.size() == b.points.size() && a.points.front() < b.points.front());
+  });
+  return faces;
+}
+
+Points voxel_subsample(const Points& points, double voxel) {
+  std::vector<std::pair<std::array<long, 3>, std::size_t>> cells;
+  cells.reserve(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    cells.push_back({{cell_of(points[i].x(), voxel), cell_of(points[i].y(), voxel), cell_of(points[i].z(), voxel)}, i});
+  std::sort(cells.begin(), cells.end());
+  std::vector<std::size_t> keep;
+  for (std::size_t k = 0; k < cells.size(); ++k)
+    if (k == 0 || cells[k].first != cells[k - 1].first) keep.push_back(cells[k].second);
+  std::sort(keep.begin(), keep.end());
+  Points out;
+  out.reserve(keep.size());
+  for (std::size_t i : keep) out.push_back(points[i]);
+  return out;
+}
+
+}  // namespace ksmc::stdlib::tabletop::perception

@@ -1,0 +1,52 @@
+// Planar faces of one cluster: per-point normals (principal axes of the neighbours within
+// `normal_radius`) and region growing over neighbours whose normals agree with the
+// region's, then each face extended over the free points next to it on its plane (the
+// edges). A box seen by a depth sensor shows one to three faces; their normals give the
+// box's orientation whether it stands upright or leans. Points at edges (high curvature)
+// off every face's plane and
+// small patches belong to no face.
+#pragma once
+
+#include <vector>
+
+#include "stdlib/tabletop/perception/cloud_io.h"
+
+namespace ksmc::stdlib::tabletop::perception {
+
+struct FaceOptions {
+  double normal_radius = 0.012;   // m, neighbourhood of a point's normal
+  double grow_radius = 0.008;     // m, region-growing neighbours
+  double max_angle_deg = 10.0;    // a point joins a face when its normal is this close to the face's
+  double max_curvature = 0.03;    // smallest eigenvalue / trace above this: an edge point, no face
+  std::size_t min_points = 30;    // smaller regions are no face
+  double plane_tolerance = 0.004; // m; an edge point joins a neighbouring face this close to its plane
+};
+
+struct Face {
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit, mean of its points' normals
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  std::vector<int> points;                            // indices into the cluster, ascending
+};
+
+// Faces of `points`, largest first (ties by first index: deterministic).
+std::vector<Face> planar_faces(const Points& points, const FaceOptions& options = {});
+
+// One point per occupied `voxel` cube (the first in input order): a sparser copy for quick
+// tests.
+Points voxel_subsample(const Points& points, double voxel);
+
+// Neighbour queries on a uniform hash grid of cell `radius` (own points only).
+class PointGrid {
+ public:
+  PointGrid(const Points& points, double radius);
+  // Indices of the points within `radius` of `p` (a fixed order for fixed input).
+  void neighbours(const Eigen::Vector3d& p, std::vector<int>& out) const;
+
+ private:
+  const Points& points_;
+  double radius_;
+  std::vector<std::pair<std::uint64_t, int>> cells_;  // (cell key, point index), sorted
+  [[nodiscard]] std::uint64_t key(long x, long y, long z) const;
+};
+
+}  // namespace ksmc::stdlib::tabletop::perception

@@ -1,0 +1,164 @@
+#include "stdlib/tabletop/perception/tilted_box.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "stdlib/tabletop/perception/footprint.h"
+
+namespace ksmc::stdlib::tabletop::perception {
+
+namespace {
+
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
+bool is_tilted(const Eigen::Vector3d& n, double min_tilt) {
+  const double up = std::abs(n.z());
+  return up < std::cos(min_tilt) && up > std::sin(min_tilt);
+}
+
+// The minimal rectangle of a face's points in its own plane (u, v: in-plane axes).
+struct PlaneRect {
+  Eigen::Vector3d u, v;
+  Eigen::Vector2d half;
+};
+PlaneRect face_rect(const Points& points, const Face& f) {
+  const Eigen::Vector3d n = f.normal;
+  const Eigen::Vector3d a = n.unitOrthogonal(), b = n.cross(a);
+  std::vector<Eigen::Vector2d> flat;
+  flat.reserve(f.points.size());
+  for (int i : f.points) {
+    const Eigen::Vector3d d = points[static_cast<std::size_t>(i)] - f.centroid;
+    flat.emplace_back(d.dot(a), d.dot(b));
+  }
+  const Rect2 r = min_area_rect(flat, 0.01);
+  const Eigen::Vector3d u = (r.u.x() * a + r.u.y() * b).normalized();
+  return {u, n.cross(u), r.half};
+}
+
+// Whether the points of face `f` lie on one side of face `plane`'s plane (1 % quantiles):
+// two faces of one box meet at an edge, a neighbour's face crosses the plane.
+bool one_sided(const Points& points, const Face& f, const Face& plane, double tolerance) {
+  std::vector<double> d;
+  d.reserve(f.points.size());
+  for (int i : f.points) d.push_back((points[static_cast<std::size_t>(i)] - plane.centroid).dot(plane.normal));
+  return quantile(d, 0.01) >= -tolerance || quantile(d, 0.99) <= tolerance;
+}
+
+// The largest face that is tilted, has `min_points` and is no narrower than min_face_side
+// in its own plane (a box face, not a bevel, a label or a carton's gable top).
+std::vector<Face>::const_iterator tilted_seed(const Points& points, const std::vector<Face>& faces, const TiltOptions& o,
+                                              std::size_t min_points) {
+  return std::find_if(faces.begin(), faces.end(), [&](const Face& f) {
+    return f.points.size() >= min_points && is_tilted(f.normal, o.min_tilt_deg * kDeg) &&
+           2.0 * face_rect(points, f).half.minCoeff() >= o.min_face_side;
+  });
+}
+
+// A leaning box rests on the table: when its lowest corner is above it, the thinnest
+// extent (the one the sensor saw least of: a single face gives no thickness) is grown on
+// its lower side until that corner reaches the table, unless the grown part would take
+// in points of the cluster that are off the box (something is there).
+void rest_on_table(const Points& points, const Eigen::Matrix3d& axes, Eigen::Vector3d& lo, Eigen::Vector3d& hi,
+                   const TiltOptions& o) {
+  double low = 0.0;
+  for (int k = 0; k < 3; ++k) low += axes(2, k) >= 0 ? lo(k) * axes(2, k) : hi(k) * axes(2, k);
+  if (low <= o.support_gap) return;
+  int k = 0;
+  for (int j = 1; j < 3; ++j)
+    if (hi(j) - lo(j) < hi(k) - lo(k)) k = j;
+  const double slope = std::abs(axes(2, k));
+  if (slope < 0.1) return;
+  const double grow = std::min(low / slope, o.max_support_growth);
+  Eigen::Vector3d glo = lo, ghi = hi;
+  (axes(2, k) > 0 ? glo(k) : ghi(k)) += axes(2, k) > 0 ? -grow : grow;
+  std::size_t inside = 0;
+  for (const auto& p : points) {
+    const Eigen::Vector3d c = axes.transpose() * p;
+    const bool in_grown = ((c - ghi).cwiseMax(glo - c)).maxCoeff() < -o.own_margin;
+    const bool in_box = ((c - hi).cwiseMax(lo - c)).maxCoeff() <= o.own_margin;
+    inside += in_grown && !in_box;
+  }
+  if (inside > o.max_support_points) return;
+  lo = glo, hi = ghi;
+}
+
+}  // namespace
+
+void canonical_axes(Eigen::Matrix3d& axes, Eigen::Vector3d& size) {
+  int up = 0;
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(axes(2, k)) > std::abs(axes(2, up))) up = k;
+  const int a = (up + 1) % 3, b = (up + 2) % 3;
+  const int first = std::abs(axes(0, a)) >= std::abs(axes(0, b)) ? a : b;
+  const int second = first == a ? b : a;
+  Eigen::Matrix3d r;
+  r.col(2) = (axes(2, up) < 0 ? -1.0 : 1.0) * axes.col(up);
+  r.col(0) = (axes(0, first) < 0 ? -1.0 : 1.0) * axes.col(first);
+  r.col(1) = r.col(2).cross(r.col(0));
+  size = Eigen::Vector3d(size(first), size(second), size(up));
+  axes = r;
+}
+
+std::optional<TiltedFit> fit_tilted_box(const Points& points, const TiltOptions& o) {
+  // A quick look on a sparse copy first: most clusters are upright boxes.
+  const Points sparse = voxel_subsample(points, o.probe_voxel);
+  FaceOptions probe = o.faces;
+  probe.normal_radius = std::max(probe.normal_radius, 2.0 * o.probe_voxel);
+  probe.grow_radius = std::max(probe.grow_radius, 2.0 * o.probe_voxel);
+  probe.min_points = 10;
+  const auto probe_points = static_cast<std::size_t>(
+      static_cast<double>(o.min_face_points) * static_cast<double>(sparse.size()) / static_cast<double>(points.size()));
+  const std::vector<Face> sparse_faces = planar_faces(sparse, probe);
+  if (tilted_seed(sparse, sparse_faces, o, probe_points) == sparse_faces.end()) return std::nullopt;
+
+  const std::vector<Face> faces = planar_faces(points, o.faces);
+  const auto seed = tilted_seed(points, faces, o, o.min_face_points);
+  if (seed == faces.end()) return std::nullopt;
+  const PlaneRect seed_rect = face_rect(points, *seed);
+
+  // Faces of the same box: perpendicular to the seed and touching it.
+  Points seed_points;
+  for (int i : seed->points) seed_points.push_back(points[static_cast<std::size_t>(i)]);
+  const PointGrid near_seed(seed_points, o.adjacent);
+  std::vector<int> nb;
+  std::vector<const Face*> box_faces{&*seed};
+  for (const Face& f : faces) {
+    if (&f == &*seed || std::abs(f.normal.dot(seed->normal)) > std::sin(o.perpendicular_deg * kDeg)) continue;
+    if (!one_sided(points, f, *seed, o.side_tolerance) || !one_sided(points, *seed, f, o.side_tolerance)) continue;
+    const bool touches = std::any_of(f.points.begin(), f.points.end(), [&](int i) {
+      near_seed.neighbours(points[static_cast<std::size_t>(i)], nb);
+      return !nb.empty();
+    });
+    if (touches) box_faces.push_back(&f);
+  }
+  Eigen::Matrix3d axes;
+  axes.col(0) = seed->normal;
+  const Eigen::Vector3d second = box_faces.size() > 1 ? box_faces[1]->normal : seed_rect.u;
+  axes.col(1) = (second - second.dot(axes.col(0)) * axes.col(0)).normalized();
+  axes.col(2) = axes.col(0).cross(axes.col(1));
+
+  Eigen::Vector3d lo, hi;
+  for (int k = 0; k < 3; ++k) {
+    std::vector<double> s;
+    for (const Face* f : box_faces)
+      for (int i : f->points) s.push_back(points[static_cast<std::size_t>(i)].dot(axes.col(k)));
+    lo(k) = quantile(s, o.trim);
+    hi(k) = quantile(s, 1.0 - o.trim);
+  }
+  rest_on_table(points, axes, lo, hi, o);
+  Eigen::Vector3d size = (hi - lo).cwiseMax(o.min_size);
+  const Eigen::Vector3d centre = axes * (0.5 * (lo + hi));
+  canonical_axes(axes, size);
+
+  TiltedFit out;
+  out.box.size = size;
+  out.box.pose.t = centre;
+  out.box.pose.q = Eigen::Quaterniond(axes).normalized();
+  for (const auto& p : points) {
+    const Eigen::Vector3d d = (axes.transpose() * (p - centre)).cwiseAbs() - 0.5 * size;
+    if (d.maxCoeff() > o.own_margin) out.rest.push_back(p);
+  }
+  return out;
+}
+
+}  // namespace ksmc::stdlib::tabletop::perception

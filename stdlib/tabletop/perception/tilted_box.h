@@ -1,0 +1,50 @@
+// Boxes that do not stand upright (leaning on a neighbour, fallen over an edge). The
+// upright fit imposes one axis along the table normal, so a leaning box gets a loose
+// upright box around it. Here the cluster's planar faces decide: a large face whose
+// normal is neither vertical nor horizontal belongs to a tilted box. Its orientation is
+// that face's normal and the normal of an adjacent perpendicular face (the box's other
+// visible faces), its extents are the trimmed extents of those faces' points along the
+// three axes. The cluster's points explained by that box are removed; what is left (the
+// upright neighbour it leans on, more tilted boxes) is fitted again by the caller.
+#pragma once
+
+#include <optional>
+
+#include "stdlib/tabletop/perception/box_fit.h"
+#include "stdlib/tabletop/perception/planar_faces.h"
+
+namespace ksmc::stdlib::tabletop::perception {
+
+struct TiltOptions {
+  FaceOptions faces;
+  double min_tilt_deg = 5.0;        // a face this far from both horizontal and vertical is tilted
+  std::size_t min_face_points = 80; // smaller tilted faces do not start a tilted box
+  double min_face_side = 0.03;      // m, nor do faces narrower than this (bevels, a carton's gable top)
+  double perpendicular_deg = 12.0;  // faces of one box: normals perpendicular within this
+  double adjacent = 0.03;           // m, a face of the same box has a point this close to the first face
+                                    // (edges are in no face: two normal radii apart)
+  double side_tolerance = 0.005;    // m; two faces of one box each lie on one side of the other's plane
+  double trim = 0.003;              // quantile pulled in on each side of each extent
+  double own_margin = 0.008;        // m, cluster points this close to the box are its own
+  double min_size = 0.005;          // m
+  double support_gap = 0.006;       // m; a box whose lowest corner is higher is grown to the table
+  double max_support_growth = 0.15; // m
+  std::size_t max_support_points = 10; // ... unless the grown part holds more cluster points than this
+  double probe_voxel = 0.008;       // m; the faces are first looked for on a copy this sparse
+};
+
+struct TiltedFit {
+  UprightBox box;   // pose in the table frame with any orientation (axis 2: the axis nearest the normal)
+  Points rest;      // the cluster's points not within own_margin of the box
+};
+
+// The tilted box of the cluster's largest tilted face, or nothing when every large face
+// is horizontal or vertical (an upright box, or a stack of them: fit_stacked_boxes).
+std::optional<TiltedFit> fit_tilted_box(const Points& points, const TiltOptions& options = {});
+
+// Axes (columns) and sizes turned into the canonical form used for every box: axis 2 is
+// the axis nearest the table normal (pointing up), axis 0 the one of the other two with
+// the larger x component (pointing to +x), right-handed.
+void canonical_axes(Eigen::Matrix3d& axes, Eigen::Vector3d& size);
+
+}  // namespace ksmc::stdlib::tabletop::perception
