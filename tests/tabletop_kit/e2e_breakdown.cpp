@@ -4,6 +4,7 @@
 // decision came from (at the input poses and at the reported state).
 //
 //   tabletop_e2e_breakdown [iterations=300] [scenes=50] [prior=map|log_z] [current_competes=1|0] [sigma_t_mm sigma_r_deg]
+//                          [pose_sigma_mm pose_sigma_deg]  (KitOptions::pose_sigma_t/_r; 0 0: no pose term)
 // With KSMC_TTKIT_FAMILY=<family> the scenes are that noise-model family's (tools/tabletop_families,
 // batch seed 2027, as tabletop_family_eval draws them).
 //
@@ -58,6 +59,10 @@ int main(int argc, char** argv) {
   kit::KitOptions options;
   if (argc > 3) options.prior_quantity = std::string(argv[3]) == "log_z" ? kit::PriorQuantity::log_z : kit::PriorQuantity::map;
   if (argc > 4) options.current_competes = std::atoi(argv[4]) != 0;
+  if (argc > 8) {
+    options.pose_sigma_t = 1e-3 * std::atof(argv[7]);
+    options.pose_sigma_r = std::atof(argv[8]) / 57.29577951308232;
+  }
   static blk::Binding binding = ksm_binding();
   if (argc > 6)  // sigma_t [mm], sigma_r [deg]
     for (auto& k : binding.kernels)

@@ -34,7 +34,7 @@ struct FamilyScore {
 struct FamilyRun {
   std::uint64_t seed = 2027;       // batch seed (scene seeds: tf::family_scene_seed)
   long scenes = 12;
-  std::uint64_t iterations = 300;  // sampler iterations per scene
+  std::uint64_t iterations = 300;  // sampler iterations per scene (tabletop_family_eval: the binary's default)
   kit::KitOptions options;
 };
 

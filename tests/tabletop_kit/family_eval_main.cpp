@@ -1,6 +1,10 @@
 // tabletop_family_eval: the per-family table of the table-top kit (issue 12).
 //   tabletop_family_eval [--families all|a,b,...] [--scenes N] [--seed S] [--iterations I]
 //                        [--binding ksm|seed] [--kinds] [--write-db DIR]
+//                        [--pose-sigma-mm T] [--pose-sigma-deg R]
+// --iterations defaults to the tabletop binary's own default (the kit's domain spec), so the
+// table is what a user running `tabletop` with its defaults gets. --pose-sigma-* set the
+// pose-estimate term of the likelihood (KitOptions::pose_sigma_t / _r; 0 turns it off).
 // --write-db writes training worlds for `ksmc learn` (write_training_dbs) instead of scoring.
 // Prints one row per family: false / hidden / support / contact P R F1 and the undecided
 // share of the true positives (docs/tabletop_families.md).
@@ -10,6 +14,7 @@
 #include <exception>
 #include <iostream>
 #include <sstream>
+#include <string>
 
 #include "tests/tabletop_kit/family_eval.h"
 
@@ -31,7 +36,7 @@ int main(int argc, char** argv) {
   try {
     FamilyRun run;
     std::string which = "all", binding_name = "ksm", db_dir;
-    bool kinds = false;
+    bool kinds = false, iterations_given = false;
     const std::vector<std::string_view> args(argv + 1, argv + argc);
     for (std::size_t i = 0; i < args.size(); ++i) {
       const std::string_view flag = args[i];
@@ -44,13 +49,19 @@ int main(int argc, char** argv) {
       if (flag == "--families") which = v;
       else if (flag == "--scenes") run.scenes = number(flag, v);
       else if (flag == "--seed") run.seed = static_cast<std::uint64_t>(number(flag, v));
-      else if (flag == "--iterations") run.iterations = static_cast<std::uint64_t>(number(flag, v));
+      else if (flag == "--iterations") {
+        run.iterations = static_cast<std::uint64_t>(number(flag, v));
+        iterations_given = true;
+      }
       else if (flag == "--binding") binding_name = v;
+      else if (flag == "--pose-sigma-mm") run.options.pose_sigma_t = 1e-3 * std::stod(std::string(v));
+      else if (flag == "--pose-sigma-deg") run.options.pose_sigma_r = std::stod(std::string(v)) / 57.29577951308232;
       else if (flag == "--write-db") db_dir = v;
       else throw std::invalid_argument(fmt::format("unknown option '{}'", flag));
     }
     if (binding_name != "ksm" && binding_name != "seed") throw std::invalid_argument("--binding: ksm or seed");
     const blk::Binding& binding = binding_name == "ksm" ? ksm_binding() : seed_binding();
+    if (!iterations_given) run.iterations = kit::domain_spec(binding).default_iterations;
     std::vector<const tf::Family*> chosen;
     if (which == "all") {
       for (const auto& f : tf::families()) chosen.push_back(&f);

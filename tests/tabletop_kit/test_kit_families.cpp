@@ -85,9 +85,13 @@ const Floor kFloors[] = {
     {"base", 0.91, 0.90, 0.95, 12.9},  // measured 0.94 / 0.96 / 0.98, 9.9 %
     {"pose_noise", 0.82, 0.89, 0.94, 11.1},  // measured 0.85 / 0.92 / 0.97, 8.1 %
     {"camera", 0.89, 0.90, 0.95, 10.9},  // measured 0.92 / 0.96 / 0.98, 7.9 %
-    {"keypoints", 0.83, 0.90, 0.95, 5.0},  // measured 0.86 / 0.96 / 0.98, 4.5 %
+    // keypoints, false_kinds: undecided floors raised with the pose-estimate term (KitOptions::
+    // pose_sigma_*): at 300 iterations one more object each sits in [0.4, 0.6] while false F1
+    // rises (0.86 -> 0.92, 0.70 -> 0.72); at the binary's 2000 iterations 3.0 % and 11.9 %
+    // (docs/tabletop_families.md, "Iterations and the pose estimate").
+    {"keypoints", 0.83, 0.90, 0.95, 9.0},  // measured 0.92 / 0.97 / 0.99, 6.0 %
     {"catalogue", 0.85, 0.90, 0.93, 13.9},  // measured 0.88 / 0.93 / 0.96, 10.9 %
-    {"false_kinds", 0.69, 0.90, 0.89, 13.2},  // measured 0.72 / 0.92 / 0.92, 10.2 %
+    {"false_kinds", 0.69, 0.90, 0.89, 17.4},  // measured 0.72 / 0.91 / 0.92, 14.4 %
     {"hidden", 0.80, 0.90, 0.95, 5.0},  // measured 0.83 / 0.98 / 0.98, 3.1 %
     {"leaning", 0.93, 0.90, 0.95, 5.0},  // measured 0.96 / 0.99 / 0.99, 2.1 %
     {"mixed", 0.76, 0.81, 0.90, 12.7},  // measured 0.79 / 0.84 / 0.93, 9.7 %

@@ -43,6 +43,7 @@ TabletopModel::TabletopModel(std::shared_ptr<const Scene> initial, const blocks:
     : binding_(binding),
       options_(options),
       mln_prior_(has_mln_prior(binding)),
+      input_(initial),
       scene_(*initial),
       sem_(binding, semantic_options(options)) {
   for (std::size_t i = 0; i < scene().objects.size(); ++i)
@@ -71,7 +72,17 @@ void TabletopModel::recompute_all() {
 }
 
 double TabletopModel::object_log_likelihood_at(std::size_t object, const Pose& pose) const {
-  return kit::object_log_likelihood(scene(), scene().objects.at(object), pose, binding_.likelihood);
+  double ll = kit::object_log_likelihood(scene(), scene().objects.at(object), pose, binding_.likelihood);
+  const Pose& estimate = input_->objects[object].pose;
+  if (options_.pose_sigma_t > 0.0) {
+    const double d = (pose.t - estimate.t).norm() / options_.pose_sigma_t;
+    ll -= 0.5 * d * d;
+  }
+  if (options_.pose_sigma_r > 0.0) {
+    const double a = Eigen::AngleAxisd(pose.q * estimate.q.conjugate()).angle() / options_.pose_sigma_r;
+    ll -= 0.5 * a * a;
+  }
+  return ll;
 }
 
 void TabletopModel::begin_move(std::size_t object, const Pose& pose, double ll_at_pose) {

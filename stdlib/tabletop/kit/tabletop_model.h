@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <numbers>
 #include <vector>
 
 #include "runtime/domain/semantics.h"
@@ -37,6 +38,16 @@ struct KitOptions {
   // The current pose takes part in the refine move's choice of the best weight (refine_kernel.h).
   bool current_competes = true;
   std::size_t cache_capacity = 512;
+  // The input pose estimate as a measurement (eq. 4.4 extended): each object's likelihood
+  // also carries log N(pose; input pose, sigma_t² I) in translation and log N(angle; 0,
+  // sigma_r²) in the rotation angle between pose and input pose. Without it the input
+  // estimate enters only as the chain's start, and the refinement forgets it the longer it
+  // runs, drifting to the keypoint-only fit (docs/tabletop_families.md, "Iterations").
+  // The defaults are the nominal RMS error of a pose estimate, the project generator's 3 mm /
+  // 1.5 deg (docs/scenegen.md), here taken per axis (√3 wider than that generator's per-axis
+  // noise, so noisier estimators are not held too tightly); zero turns the term off.
+  double pose_sigma_t = 0.003;                         // [m]
+  double pose_sigma_r = 1.5 * std::numbers::pi / 180.0;  // [rad]
 };
 
 class TabletopModel : public runtime::mcmc::Model {
@@ -77,6 +88,7 @@ class TabletopModel : public runtime::mcmc::Model {
   const blocks::Binding& binding_;
   KitOptions options_;
   bool mln_prior_ = false;
+  std::shared_ptr<const Scene> input_;  // the input estimates (pose term of the likelihood)
   blocks::Scene scene_;
   runtime::domain::Semantics<blocks::Scene> sem_;
   std::vector<std::size_t> observed_;
