@@ -34,10 +34,20 @@ std::array<Edge, 4> edges_of(const OrientedRect& r) {
 std::optional<WallPair> connecting_walls(const OrientedRect& a, const OrientedRect& b, double dilate_cells) {
   // Called for every unit pair of every proposal's semantic evaluation: each rectangle's
   // edges are measured once, not once per edge pair.
-  const auto ea = edges_of(a);
-  const auto eb = edges_of(b);
   const double max_gap = 2.0 * dilate_cells + 1.0;
   static const double sin_tol = std::sin(10.0 * 3.14159265358979323846 / 180.0);
+  // A pair below passes only if some point of b's edge lies within max_gap + (its length / 2)
+  // * sin_tol of a's edge (the midpoint's distance plus the tilt over half the edge, at a
+  // point whose projection falls on a's edge). So rectangles whose enclosing circles are
+  // farther apart than that (plus a cell against rounding) share no wall: most pairs of a
+  // large map, decided without their corners.
+  if (dilate_cells >= 0.0) {
+    const double reach = max_gap + 0.5 * std::max(std::abs(b.w), std::abs(b.h)) * sin_tol + 1.0;
+    const double apart = std::hypot(a.cx - b.cx, a.cy - b.cy) - 0.5 * std::hypot(a.w, a.h) - 0.5 * std::hypot(b.w, b.h);
+    if (apart > reach) return std::nullopt;
+  }
+  const auto ea = edges_of(a);
+  const auto eb = edges_of(b);
   std::optional<WallPair> best;
   for (int i = 0; i < 4; ++i) {
     const Edge& p = ea[static_cast<std::size_t>(i)];
