@@ -142,7 +142,9 @@ Output decisions(std::int32_t false_est, std::int32_t hidden) { return Decisions
 Prior mln() { return MlnPrior{}; }
 
 namespace keypoints {
-Likelihood gaussian(double sigma, bool robust, double outlier_px) { return KeypointGaussian{sigma, robust, outlier_px}; }
+Likelihood gaussian(double sigma, bool robust, double outlier_px, double estimate_sigma_t, double estimate_sigma_r) {
+  return KeypointGaussian{sigma, robust, outlier_px, estimate_sigma_t, estimate_sigma_r};
+}
 }  // namespace keypoints
 
 namespace pose {

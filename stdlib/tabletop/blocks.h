@@ -34,6 +34,8 @@ struct KeypointGaussian {
   double sigma_px = 1.0;
   bool robust = false;
   double outlier_px = 20.0;
+  double estimate_sigma_t = 0.0;  // [m] the input pose estimate as a measurement; 0: off
+  double estimate_sigma_r = 0.0;  // [rad]
 };
 using Likelihood = KeypointGaussian;
 
@@ -91,7 +93,7 @@ Output decisions(std::int32_t false_est, std::int32_t hidden);
 Prior mln();
 
 namespace keypoints {
-Likelihood gaussian(double sigma, bool robust, double outlier_px);
+Likelihood gaussian(double sigma, bool robust, double outlier_px, double estimate_sigma_t, double estimate_sigma_r);
 }  // namespace keypoints
 
 namespace pose {

@@ -16,7 +16,8 @@ namespace blk = ksmc::stdlib::tabletop::blocks;
 namespace gen = ksmc_generated::tabletop;
 
 // domains/tabletop.ksm (10 deg, 4 mm, 5 mm, 4 mm; robust Gaussian, 5 px; overlap 0.5 of the
-// smaller box, flatter by 0.5 deg; overhang within 4 mm, beyond 5 mm).
+// smaller box, flatter by 0.5 deg; overhang within 4 mm, beyond 5 mm; the pose estimate as a
+// measurement, 3 mm / 1.5 deg).
 struct KsmValues {
   static constexpr double stable_tol = 0.17453292519943295;
   static constexpr double contact_eps = 0.004;
@@ -28,6 +29,8 @@ struct KsmValues {
   static constexpr double flatter_margin = 0.008726646259971648;
   static constexpr double overhang_eps = 0.004;
   static constexpr double overhang_margin = 0.005;
+  static constexpr double estimate_sigma_t = 0.003;                   // 3 mm
+  static constexpr double estimate_sigma_r = 0.026179938779914945;    // 1.5 deg
 };
 
 // A literal reading of the seed: 3 deg, 4 mm, 4 mm, plain Gaussian (sigma 1 px). The seed has
@@ -43,6 +46,8 @@ struct SeedValues {
   static constexpr double flatter_margin = KsmValues::flatter_margin;
   static constexpr double overhang_eps = KsmValues::overhang_eps;
   static constexpr double overhang_margin = KsmValues::overhang_margin;
+  static constexpr double estimate_sigma_t = KsmValues::estimate_sigma_t;  // not in the seed either
+  static constexpr double estimate_sigma_r = KsmValues::estimate_sigma_r;
 };
 
 // The generated program's predicate named `name`, or -1.
@@ -100,7 +105,7 @@ struct Fixture {
       b.extractors.push_back({p, &overhang, "extract overhang(o) = obb.overhang(o, ...)"});
     b.extractors.push_back({gen::kPred_table, &table, "extract table(o) = scene.is_table(o)"});
     b.priors.push_back(blk::mln());
-    b.likelihood = blk::keypoints::gaussian(1.0, V::robust, V::outlier_px);
+    b.likelihood = blk::keypoints::gaussian(1.0, V::robust, V::outlier_px, V::estimate_sigma_t, V::estimate_sigma_r);
     if (decisions) b.outputs.push_back(blk::scene::decisions(gen::kPred_falseEst, gen::kPred_hidden));
     b.kernels.push_back({"refine", "refine", blk::Move::perturb, {blk::pose::perturb(0.001, 0.008726646259971648, 20)},
                          "kernel refine(o: object) reverse refine = pose.perturb(...)"});

@@ -4,7 +4,7 @@
 // decision came from (at the input poses and at the reported state).
 //
 //   tabletop_e2e_breakdown [iterations=300] [scenes=50] [prior=map|log_z] [current_competes=1|0] [sigma_t_mm sigma_r_deg]
-//                          [pose_sigma_mm pose_sigma_deg]  (KitOptions::pose_sigma_t/_r; 0 0: no pose term)
+//                          [pose_sigma_mm pose_sigma_deg]  (KitOptions::pose_sigma_t/_r over the domain's estimate_sigma_*; 0 0: no pose term)
 // With KSMC_TTKIT_FAMILY=<family> the scenes are that noise-model family's (tools/tabletop_families,
 // batch seed 2027, as tabletop_family_eval draws them).
 //

@@ -4,7 +4,7 @@
 //                        [--pose-sigma-mm T] [--pose-sigma-deg R]
 // --iterations defaults to the tabletop binary's own default (the kit's domain spec), so the
 // table is what a user running `tabletop` with its defaults gets. --pose-sigma-* set the
-// pose-estimate term of the likelihood (KitOptions::pose_sigma_t / _r; 0 turns it off).
+// pose-estimate term of the likelihood (KitOptions::pose_sigma_t / _r, overriding the domain's keypoints.gaussian estimate_sigma_t / _r; 0 turns it off).
 // --write-db writes training worlds for `ksmc learn` (write_training_dbs) instead of scoring.
 // Prints one row per family: false / hidden / support / contact P R F1 and the undecided
 // share of the true positives (docs/tabletop_families.md).

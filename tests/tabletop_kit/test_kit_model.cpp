@@ -251,13 +251,15 @@ TEST_CASE("kit likelihood is eq. 4.4; the robust variant caps residuals at outli
   CHECK(lr >= floor - 1e-9);
 }
 
-TEST_CASE("kit likelihood carries the input pose estimate as a measurement (KitOptions::pose_sigma_*)") {
+TEST_CASE("kit likelihood carries the input pose estimate as a measurement (keypoints.gaussian estimate_sigma_*)") {
   const auto scene = example("seed_example.json");
   const blk::Binding& b = ksm_binding();
   kit::KitOptions off;
   off.pose_sigma_t = off.pose_sigma_r = 0.0;
-  const kit::KitOptions on;  // the defaults: 3 mm, 1.5 deg
-  REQUIRE(on.pose_sigma_t > 0.0);
+  const kit::KitOptions on;  // the domain's values: domains/tabletop.ksm declares 3 mm, 1.5 deg
+  const double sigma_t = b.likelihood.estimate_sigma_t, sigma_r = b.likelihood.estimate_sigma_r;
+  CHECK(sigma_t == Approx(0.003));
+  CHECK(sigma_r == Approx(1.5 * 3.14159265358979323846 / 180.0));
   kit::TabletopModel without(scene, b, off), with(scene, b, on);
   for (std::size_t i = 0; i < scene->objects.size(); ++i) {
     const auto& o = scene->objects[i];
@@ -266,11 +268,11 @@ TEST_CASE("kit likelihood carries the input pose estimate as a measurement (KitO
     CHECK(with.object_log_likelihood_at(i, o.pose) == Approx(kp).epsilon(1e-12));  // no cost at the estimate
     // One sigma off in translation costs 1/2, one sigma of rotation 1/2, both together 1.
     tt::Pose shifted = o.pose;
-    shifted.t.y() += on.pose_sigma_t;
+    shifted.t.y() += sigma_t;
     const double kp_shifted = kit::object_log_likelihood(*scene, o, shifted, b.likelihood);
     CHECK(with.object_log_likelihood_at(i, shifted) == Approx(kp_shifted - 0.5).epsilon(1e-9));
     tt::Pose both = shifted;
-    both.q = (Eigen::Quaterniond(Eigen::AngleAxisd(on.pose_sigma_r, Eigen::Vector3d::UnitZ())) * o.pose.q).normalized();
+    both.q = (Eigen::Quaterniond(Eigen::AngleAxisd(sigma_r, Eigen::Vector3d::UnitZ())) * o.pose.q).normalized();
     const double kp_both = kit::object_log_likelihood(*scene, o, both, b.likelihood);
     CHECK(with.object_log_likelihood_at(i, both) == Approx(kp_both - 1.0).epsilon(1e-9));
     CHECK(without.object_log_likelihood_at(i, both) == kp_both);

@@ -73,13 +73,16 @@ void TabletopModel::recompute_all() {
 
 double TabletopModel::object_log_likelihood_at(std::size_t object, const Pose& pose) const {
   double ll = kit::object_log_likelihood(scene(), scene().objects.at(object), pose, binding_.likelihood);
+  // The input pose estimate as a measurement (keypoints.gaussian's estimate_sigma_*).
   const Pose& estimate = input_->objects[object].pose;
-  if (options_.pose_sigma_t > 0.0) {
-    const double d = (pose.t - estimate.t).norm() / options_.pose_sigma_t;
+  const double sigma_t = options_.pose_sigma_t.value_or(binding_.likelihood.estimate_sigma_t);
+  const double sigma_r = options_.pose_sigma_r.value_or(binding_.likelihood.estimate_sigma_r);
+  if (sigma_t > 0.0) {
+    const double d = (pose.t - estimate.t).norm() / sigma_t;
     ll -= 0.5 * d * d;
   }
-  if (options_.pose_sigma_r > 0.0) {
-    const double a = Eigen::AngleAxisd(pose.q * estimate.q.conjugate()).angle() / options_.pose_sigma_r;
+  if (sigma_r > 0.0) {
+    const double a = Eigen::AngleAxisd(pose.q * estimate.q.conjugate()).angle() / sigma_r;
     ll -= 0.5 * a * a;
   }
   return ll;

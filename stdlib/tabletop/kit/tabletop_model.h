@@ -15,7 +15,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
-#include <numbers>
+#include <optional>
 #include <vector>
 
 #include "runtime/domain/semantics.h"
@@ -38,16 +38,11 @@ struct KitOptions {
   // The current pose takes part in the refine move's choice of the best weight (refine_kernel.h).
   bool current_competes = true;
   std::size_t cache_capacity = 512;
-  // The input pose estimate as a measurement (eq. 4.4 extended): each object's likelihood
-  // also carries log N(pose; input pose, sigma_t² I) in translation and log N(angle; 0,
-  // sigma_r²) in the rotation angle between pose and input pose. Without it the input
-  // estimate enters only as the chain's start, and the refinement forgets it the longer it
-  // runs, drifting to the keypoint-only fit (docs/tabletop_families.md, "Iterations").
-  // The defaults are the nominal RMS error of a pose estimate, the project generator's 3 mm /
-  // 1.5 deg (docs/scenegen.md), here taken per axis (√3 wider than that generator's per-axis
-  // noise, so noisier estimators are not held too tightly); zero turns the term off.
-  double pose_sigma_t = 0.003;                         // [m]
-  double pose_sigma_r = 1.5 * std::numbers::pi / 180.0;  // [rad]
+  // Overrides of the domain's pose-estimate measurement (keypoints.gaussian's
+  // estimate_sigma_t / estimate_sigma_r, declared in the domain file; 0 turns it off), for
+  // evaluations that compare settings. Unset: the domain's values run.
+  std::optional<double> pose_sigma_t;  // [m]
+  std::optional<double> pose_sigma_r;  // [rad]
 };
 
 class TabletopModel : public runtime::mcmc::Model {
