@@ -2,6 +2,8 @@
 // them (deepest unit wins), a room no unit reaches behind a door is a segment of its own, other
 // free cells go to the nearest unit through free space, walls
 // and unknown cells stay 0, a free pocket no unit reaches stays 0.
+#include <algorithm>
+
 #include <catch2/catch.hpp>
 
 #include <opencv2/imgcodecs.hpp>
@@ -152,4 +154,77 @@ TEST_CASE("segmentation: free-standing furniture gets its room, walls and furnit
     if (r != 3 && r != 4) g(r, 9) = static_cast<std::uint8_t>(Cell::Free);
   g(3, 9) = g(4, 9) = static_cast<std::uint8_t>(Cell::Occupied);
   CHECK(render_segmentation(g, w)(3, 9) == 0);
+}
+
+namespace {
+
+// 0.05 m cells, walls 2 cells thick. A 2 m corridor (rows 2-41) above three offices 3 m wide
+// and 4 m deep (rows 44-123; cols 2-61, 64-123, 126-185, partitions at cols 62-63 and
+// 124-125). The offices' corridor side (rows 42-43) is open over 2.2 m: only 0.4 m wall stubs
+// stand at either side of each partition and at the outer walls.
+ClassGrid open_front_offices() {
+  ClassGrid g(126, 188, static_cast<std::uint8_t>(Cell::Occupied));
+  for (int r = 2; r <= 123; ++r)
+    for (int c = 2; c <= 185; ++c)
+      if (!(r >= 42 && (c >= 62 && c <= 63)) && !(r >= 42 && c >= 124 && c <= 125)) g(r, c) = static_cast<std::uint8_t>(Cell::Free);
+  for (int r = 42; r <= 43; ++r)
+    for (int c = 2; c <= 185; ++c)
+      if (c <= 9 || (c >= 54 && c <= 71) || (c >= 116 && c <= 133) || c >= 178) g(r, c) = static_cast<std::uint8_t>(Cell::Occupied);
+  return g;
+}
+
+}  // namespace
+
+TEST_CASE("segmentation: a unit over offices open to a corridor is cut along the wall-stub line") {
+  ClassGrid g = open_front_offices();
+  WorldResult w;
+  w.map.resolution = 0.05;
+  w.units = {unit(2, 1.5, 1.5, 186.5, 124.5)};  // one unit over the corridor and all offices
+  cv::Mat1w s = render_segmentation(g, w);
+  const std::uint16_t corridor = s(20, 100), a = s(80, 30), b = s(80, 90), c = s(80, 150);
+  CHECK(corridor == 2);  // the largest piece keeps the unit's id
+  CHECK(a != corridor);
+  CHECK(b != corridor);
+  CHECK(c != corridor);
+  CHECK(a != b);
+  CHECK(b != c);
+  CHECK(a > 2);  // new ids above every id in use
+  for (int r = 2; r <= 41; ++r) CHECK(s(r, 5) == corridor);
+  for (int r = 44; r <= 123; r += 7)
+    for (int col = 2; col <= 61; col += 5) CHECK(s(r, col) == a);  // an office is not cut in strips
+  // Without the stubs the offices' fronts are no wall line: one segment.
+  for (int r = 42; r <= 43; ++r)
+    for (int col = 2; col <= 185; ++col)
+      if (!(col >= 62 && col <= 63) && !(col >= 124 && col <= 125)) g(r, col) = static_cast<std::uint8_t>(Cell::Free);
+  s = render_segmentation(g, w);
+  CHECK(s(80, 30) == 2);
+  CHECK(s(80, 90) == 2);
+  CHECK(s(20, 100) == 2);
+}
+
+TEST_CASE("segmentation: a wall line with a gap over 3 m, or shelves in line inside a room, cut nothing") {
+  // One room 8 m x 4 m (rows 2-81, cols 2-161), walls 2 cells thick. A wall line across it at
+  // rows 40-41 from each side wall, with a 3.5 m gap (cols 41-110).
+  ClassGrid g(84, 164, static_cast<std::uint8_t>(Cell::Occupied));
+  for (int r = 2; r <= 81; ++r)
+    for (int c = 2; c <= 161; ++c)
+      if (!(r >= 40 && r <= 41 && (c <= 40 || c >= 111))) g(r, c) = static_cast<std::uint8_t>(Cell::Free);
+  // Two shelves 0.1 m x 1 m in one line in the upper half, 1.5 m apart: a gap in a "wall line"
+  // whose cut does not separate anything (the room continues around the shelves).
+  for (int r = 20; r <= 21; ++r)
+    for (int c = 0; c < 20; ++c) g(r, 50 + c) = g(r, 100 + c) = static_cast<std::uint8_t>(Cell::Occupied);
+  WorldResult w;
+  w.map.resolution = 0.05;
+  w.units = {unit(2, 1.5, 1.5, 162.5, 82.5)};
+  cv::Mat1w s = render_segmentation(g, w);
+  CHECK(s(10, 80) == 2);
+  CHECK(s(30, 80) == 2);
+  CHECK(s(70, 80) == 2);
+  // The gap narrowed to 2.5 m (cols 61-110): the line now cuts the room in two.
+  for (int r = 40; r <= 41; ++r)
+    for (int c = 41; c <= 60; ++c) g(r, c) = static_cast<std::uint8_t>(Cell::Occupied);
+  s = render_segmentation(g, w);
+  CHECK(s(10, 80) != s(70, 80));
+  CHECK(s(10, 80) == s(30, 80));  // the shelves still cut nothing
+  CHECK(std::min(s(10, 80), s(70, 80)) == 2);
 }

@@ -14,6 +14,7 @@
 
 #include "runtime/io/atomic_file.h"
 #include "stdlib/indoor/io/quad.h"
+#include "stdlib/indoor/io/wall_gap_cuts.h"
 #include "stdlib/indoor/io/world_images.h"
 #include "stdlib/indoor/io/world_json.h"
 
@@ -217,6 +218,7 @@ cv::Mat1w render_segmentation(const ClassGrid& grid, const WorldResult& w) {
     }
   }
   merge_open_spaces(w, label);
+  split_at_wall_gaps(grid, w.map.resolution, label);
   fill_furniture(grid, w, label);
   return label;
 }

@@ -23,6 +23,9 @@
 //     pairs) is one space with it (the `@one_space` rule's 2 m): furniture cutting a room's
 //     core in pieces, or a unit covering part of a room open to it. Widest contact first; two
 //     units are never joined;
+//   * a segment that a straight wall line with a gap (at most 3 m) crosses is two spaces: an
+//     office open to its corridor over 2-3 m between wall stubs gets its own id
+//     (split_at_wall_gaps, wall_gap_cuts.h);
 //   * an occupied 8-connected blob of at most 4 m^2, off the map's edge, whose 4-neighbours are
 //     all free cells of one segment is furniture standing in that room: it gets the segment.
 #pragma once

@@ -1,0 +1,28 @@
+// A room segmentation's post-step (segmentation.png): a segment that a straight wall line with
+// a gap crosses is two spaces. Defect it addresses (docs/indoor_knowledge.md, "Open office
+// fronts"): a row of offices whose door side is open to the corridor over 2-3 m (wider than a
+// door, so the chain's `@one_space` rule calls office and corridor one space) ends up in one
+// unit; a person, and the Bormann et al. ground truth, draw the room boundary along the line
+// of the wall stubs on either side of each opening.
+//
+// Rule, per row and per column of the map: a run of free, labelled cells at most kMaxGap long
+// whose two ends are wall cells where a wall continues straight on along the run's line (at
+// least kWallRun of occupied cells beyond each end, and that wall at most kMaxWallThickness
+// thick across the line) is a gap in a wall line, a cut. A wall crossed across its thickness,
+// a thick block, or furniture that does not line up on both ends gives no cut. The cells of a
+// segment minus its cut cells fall into 4-connected pieces; when two or more pieces are at
+// least kMinPiece large, the largest keeps the segment's id, each other one gets a new id
+// (above every id in use), and the cut cells and small pieces go to the nearest large piece of
+// their segment through the segment's cells. A segment with fewer than two large pieces is
+// unchanged, so a cut that does not separate a space (a gap between two tables) changes nothing.
+#pragma once
+
+#include <opencv2/core/mat.hpp>
+
+#include "stdlib/indoor/io/world_result.h"
+
+namespace ksmc::stdlib::indoor::io {
+
+void split_at_wall_gaps(const ClassGrid& grid, double resolution, cv::Mat1w& label);
+
+}  // namespace ksmc::stdlib::indoor::io
