@@ -1,7 +1,8 @@
 // segmentation.png's fill rule on small synthetic grids: units explain the free cells inside
 // them (deepest unit wins), a room no unit reaches behind a door is a segment of its own, other
 // free cells go to the nearest unit through free space, walls
-// and unknown cells stay 0, a free pocket no unit reaches stays 0.
+// and unknown cells stay 0, a free pocket no unit reaches stays 0 (a larger one is a segment),
+// two units in one open room are one segment.
 #include <algorithm>
 
 #include <catch2/catch.hpp>
@@ -227,4 +228,60 @@ TEST_CASE("segmentation: a wall line with a gap over 3 m, or shelves in line ins
   CHECK(s(10, 80) != s(70, 80));
   CHECK(s(10, 80) == s(30, 80));  // the shelves still cut nothing
   CHECK(std::min(s(10, 80), s(70, 80)) == 2);
+}
+
+namespace {
+
+// A walled room of `rows` x `cols` free cells (0.05 m) starting at (1, 1).
+ClassGrid walled_room(int rows, int cols) {
+  ClassGrid g(rows + 2, cols + 2, static_cast<std::uint8_t>(Cell::Occupied));
+  for (int r = 1; r <= rows; ++r)
+    for (int c = 1; c <= cols; ++c) g(r, c) = static_cast<std::uint8_t>(Cell::Free);
+  return g;
+}
+
+}  // namespace
+
+TEST_CASE("segmentation: a narrow walled-off room no unit reaches is a segment of its own") {
+  // Room A: cols 1-60; a 1 m wide room (cols 62-81, rows 1-60) behind a solid wall at col 61:
+  // none of its cells is over 0.6 m from a wall, so seed_uncovered_spaces does not see it.
+  ClassGrid g = walled_room(60, 81);
+  for (int r = 1; r <= 60; ++r) g(r, 61) = static_cast<std::uint8_t>(Cell::Occupied);
+  WorldResult w;
+  w.map.resolution = 0.05;
+  w.units = {unit(4, 0.5, 0.5, 60.5, 60.5)};
+  const cv::Mat1w s = render_segmentation(g, w);
+  CHECK(s(30, 30) == 4);
+  const std::uint16_t b = s(30, 70);
+  CHECK(b == 5);
+  CHECK(s(1, 62) == b);
+  CHECK(s(60, 81) == b);
+  CHECK(s(30, 61) == 0);  // the wall
+}
+
+TEST_CASE("segmentation: two units in one open room are one segment, unless a wall or size separates them") {
+  // One 6 m x 4 m room covered by a unit and a 1.5 m strip unit beside it (as a chain leaves a
+  // room: a unit and a sliver). No wall between them: one segment, the smaller id.
+  WorldResult w;
+  w.map.resolution = 0.05;
+  w.units = {unit(3, 0.5, 0.5, 90.5, 80.5), unit(8, 90.5, 0.5, 120.5, 80.5)};
+  ClassGrid g = walled_room(80, 120);
+  cv::Mat1w s = render_segmentation(g, w);
+  CHECK(s(40, 40) == 3);
+  CHECK(s(40, 110) == 3);
+  CHECK(s(5, 118) == 3);
+  // A wall between them at col 91 with a 2.5 m opening (rows 16-65): two rooms sharing a wall
+  // (wall runs 30 rows, over a quarter of the 50-row free contact): two segments.
+  for (int r = 1; r <= 80; ++r)
+    if (r < 16 || r > 65) g(r, 91) = static_cast<std::uint8_t>(Cell::Occupied);
+  s = render_segmentation(g, w);
+  CHECK(s(40, 40) == 3);
+  CHECK(s(40, 110) == 8);
+  // No wall, but both units are rooms in their own right (6 m x 4 m, 24 m^2 each): two segments.
+  WorldResult big;
+  big.map.resolution = 0.05;
+  big.units = {unit(3, 0.5, 0.5, 120.5, 80.5), unit(8, 120.5, 0.5, 240.5, 80.5)};
+  s = render_segmentation(walled_room(80, 240), big);
+  CHECK(s(40, 40) == 3);
+  CHECK(s(40, 200) == 8);
 }

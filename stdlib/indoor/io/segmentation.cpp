@@ -31,14 +31,19 @@ namespace {
 constexpr double kPassageHalfWidth = 0.6;  // m: passages up to 1.2 m wide (a door and its frame)
 constexpr double kMinCoreArea = 0.5;       // m^2 of cells farther than that from every wall
 
-void seed_uncovered_spaces(const ClassGrid& grid, const WorldResult& w, cv::Mat1w& label) {
-  const double res = w.map.resolution > 0.0 ? w.map.resolution : 0.05;
+// The free cells farther than kPassageHalfWidth from every wall or unknown cell (255), else 0.
+cv::Mat1b open_core(const ClassGrid& grid, double res) {
   cv::Mat1b free_mask(grid.rows, grid.cols);
   for (int r = 0; r < grid.rows; ++r)
     for (int c = 0; c < grid.cols; ++c) free_mask(r, c) = grid(r, c) == static_cast<std::uint8_t>(Cell::Free) ? 255 : 0;
   cv::Mat1f dist;
   cv::distanceTransform(free_mask, dist, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-  const cv::Mat1b core = dist > static_cast<float>(kPassageHalfWidth / res);
+  return dist > static_cast<float>(kPassageHalfWidth / res);
+}
+
+void seed_uncovered_spaces(const ClassGrid& grid, const WorldResult& w, cv::Mat1w& label) {
+  const double res = w.map.resolution > 0.0 ? w.map.resolution : 0.05;
+  const cv::Mat1b core = open_core(grid, res);
   cv::Mat1i comp;
   const int n = cv::connectedComponents(core, comp, 4, CV_32S);
   std::vector<char> covered(static_cast<std::size_t>(n), 0);
@@ -63,32 +68,130 @@ void seed_uncovered_spaces(const ClassGrid& grid, const WorldResult& w, cv::Mat1
       if (const int k = id[static_cast<std::size_t>(comp(r, c))]; k != 0) label(r, c) = static_cast<std::uint16_t>(k);
 }
 
-// A space of its own (seed_uncovered_spaces) that meets another segment over more than
-// kOpenJoin of free cells is one space with it, as the `@one_space` rule of domains/indoor.ksm
-// says of units (a free run over 2 m): furniture cuts an uncovered room's core into pieces, a
-// door does not join two rooms that wide. Pairs are joined widest contact first; two units
-// are never joined.
-constexpr double kOpenJoin = 2.0;  // m
+// A free component that no unit and no space reaches (a small room or a narrow one, whose
+// cells all lie within kPassageHalfWidth of a wall, seen by no unit) is a space of its own when
+// it is at least kMinLoneArea large: it is free floor a robot can stand on, in no other
+// segment. Smaller components (scan speckle) stay 0.
+constexpr double kMinLoneArea = 0.25;  // m^2
 
-void merge_open_spaces(const WorldResult& w, cv::Mat1w& label) {
+void label_unreached_components(const ClassGrid& grid, double resolution, cv::Mat1w& label) {
+  const double res = resolution > 0.0 ? resolution : 0.05;
+  const auto min_cells = static_cast<std::size_t>(std::ceil(kMinLoneArea / (res * res)));
+  int next = 0;
+  for (int r = 0; r < label.rows; ++r)
+    for (int c = 0; c < label.cols; ++c) next = std::max<int>(next, label(r, c));
+  cv::Mat1b seen(grid.rows, grid.cols, static_cast<std::uint8_t>(0));
+  std::vector<std::pair<int, int>> comp, stack;
+  constexpr int kDr[4] = {-1, 0, 0, 1}, kDc[4] = {0, -1, 1, 0};
+  const auto open = [&](int r, int c) {
+    return grid(r, c) == static_cast<std::uint8_t>(Cell::Free) && label(r, c) == 0 && !seen(r, c);
+  };
+  for (int r0 = 0; r0 < grid.rows; ++r0)
+    for (int c0 = 0; c0 < grid.cols; ++c0) {
+      if (!open(r0, c0)) continue;
+      comp.clear();
+      stack.assign(1, {r0, c0});
+      seen(r0, c0) = 1;
+      while (!stack.empty()) {
+        const auto [r, c] = stack.back();
+        stack.pop_back();
+        comp.emplace_back(r, c);
+        for (int k = 0; k < 4; ++k) {
+          const int nr = r + kDr[k], nc = c + kDc[k];
+          if (nr < 0 || nc < 0 || nr >= grid.rows || nc >= grid.cols || !open(nr, nc)) continue;
+          seen(nr, nc) = 1;
+          stack.emplace_back(nr, nc);
+        }
+      }
+      if (comp.size() < min_cells || next >= 0xffff) continue;
+      ++next;
+      for (const auto& [r, c] : comp) label(r, c) = static_cast<std::uint16_t>(next);
+    }
+}
+
+// Two segments that meet over more than kOpenJoin of free cells are one space, as the
+// `@one_space` rule of domains/indoor.ksm says of units (a free run over 2 m): furniture cuts an
+// uncovered room's core into pieces, a door does not join two rooms that wide. Two units (the
+// chain's rectangles) are joined only when, besides, no wall separates them:
+//   * more than kOpenCore of their contact lies in open_core (both cells over 0.6 m from every
+//     wall or unknown cell: an opening wider than a door frame, not a jagged fill boundary
+//     running through a door), and
+//   * the wall runs between them (a free cell of one, at most kMaxWallThickness of occupied
+//     cells along a row or column, a free cell of the other) are at most kWallShare of their
+//     free contact: two rooms with a wide opening in the wall between them share a long wall;
+//     a room the chain covered with a unit and a sliver, or a corridor in pieces, does not; and
+//   * the smaller of the two is under kMaxJoinedPiece: a piece of a room (a sliver along its
+//     edge, one end of a corridor), not a room of its own; without it a corridor unit swallows
+//     the offices whose units reach into it (office_h: corridor and 10 offices one segment).
+// Pairs are joined widest contact first. split_at_wall_gaps runs afterwards and cuts again
+// where a straight wall line with a gap crosses a joined segment.
+constexpr double kOpenJoin = 2.0;           // m of free contact
+constexpr double kOpenCore = 0.5;           // m of contact in open_core, for two units
+constexpr double kWallShare = 0.25;         // wall runs / free contact pairs, for two units
+constexpr double kMaxWallThickness = 0.4;   // m
+constexpr double kMaxJoinedPiece = 20.0;    // m^2, for two units
+
+using PairCount = std::map<std::pair<int, int>, long>;  // (smaller, larger id) -> count
+
+// Wall runs between two different segments along rows and columns.
+PairCount wall_contacts(const ClassGrid& grid, double res, const cv::Mat1w& label) {
+  PairCount out;
+  const int thick = std::max(1, static_cast<int>(std::lround(kMaxWallThickness / res)));
+  for (const bool rows : {true, false}) {
+    const int lines = rows ? label.rows : label.cols, len = rows ? label.cols : label.rows;
+    for (int l = 0; l < lines; ++l) {
+      int prev = 0, wall = 0;
+      for (int k = 0; k < len; ++k) {
+        const int r = rows ? l : k, c = rows ? k : l;
+        if (grid(r, c) == static_cast<std::uint8_t>(Cell::Occupied)) {
+          ++wall;
+          continue;
+        }
+        const int cur = label(r, c);
+        if (cur != 0 && prev != 0 && cur != prev && wall > 0 && wall <= thick) ++out[{std::min(cur, prev), std::max(cur, prev)}];
+        prev = cur;
+        wall = 0;
+      }
+    }
+  }
+  return out;
+}
+
+void merge_open_spaces(const ClassGrid& grid, const WorldResult& w, cv::Mat1w& label) {
+  const double res = w.map.resolution > 0.0 ? w.map.resolution : 0.05;
   int max_unit = 0;
   for (const auto& u : w.units) max_unit = std::max(max_unit, u.id);
-  std::map<std::pair<int, int>, long> contact;  // (smaller, larger id) -> 4-neighbour cell pairs
-  const auto touch = [&](int a, int b) {
-    if (a == 0 || b == 0 || a == b || std::max(a, b) <= max_unit) return;
-    ++contact[{std::min(a, b), std::max(a, b)}];
+  const cv::Mat1b core = open_core(grid, res);
+  PairCount contact, core_contact;  // 4-neighbour cell pairs, all / both in open_core
+  const auto touch = [&](int a, int b, bool in_core) {
+    if (a == 0 || b == 0 || a == b) return;
+    const std::pair<int, int> ab{std::min(a, b), std::max(a, b)};
+    ++contact[ab];
+    if (in_core) ++core_contact[ab];
   };
   for (int r = 0; r < label.rows; ++r)
     for (int c = 0; c < label.cols; ++c) {
-      if (c + 1 < label.cols) touch(label(r, c), label(r, c + 1));
-      if (r + 1 < label.rows) touch(label(r, c), label(r + 1, c));
+      if (c + 1 < label.cols) touch(label(r, c), label(r, c + 1), core(r, c) && core(r, c + 1));
+      if (r + 1 < label.rows) touch(label(r, c), label(r + 1, c), core(r, c) && core(r + 1, c));
     }
-  const double res = w.map.resolution > 0.0 ? w.map.resolution : 0.05;
+  const PairCount walls = wall_contacts(grid, res, label);
+  std::map<int, long> area;
+  for (int r = 0; r < label.rows; ++r)
+    for (int c = 0; c < label.cols; ++c) ++area[label(r, c)];
   std::vector<std::pair<long, std::pair<int, int>>> joins;
-  for (const auto& [ab, n] : contact)
-    if (static_cast<double>(n) * res > kOpenJoin) joins.push_back({n, ab});
+  for (const auto& [ab, n] : contact) {
+    if (static_cast<double>(n) * res <= kOpenJoin) continue;
+    if (ab.second <= max_unit) {  // two units
+      if (static_cast<double>(std::min(area[ab.first], area[ab.second])) * res * res >= kMaxJoinedPiece) continue;
+      const auto cc = core_contact.find(ab);
+      const auto wc = walls.find(ab);
+      if (cc == core_contact.end() || static_cast<double>(cc->second) * res <= kOpenCore) continue;
+      if (wc != walls.end() && static_cast<double>(wc->second) > kWallShare * static_cast<double>(n)) continue;
+    }
+    joins.push_back({n, ab});
+  }
   std::stable_sort(joins.begin(), joins.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
-  std::map<int, int> parent;  // union-find over ids; a set's root is its unit when it has one
+  std::map<int, int> parent;  // union-find over ids; a set's root is its smallest unit id when it has one
   const auto find = [&parent](int a) {
     while (true) {
       const auto it = parent.find(a);
@@ -98,14 +201,15 @@ void merge_open_spaces(const WorldResult& w, cv::Mat1w& label) {
   };
   for (const auto& [n, ab] : joins) {
     const int ra = find(ab.first), rb = find(ab.second);
-    if (ra == rb || (ra <= max_unit && rb <= max_unit)) continue;
-    if (ra <= max_unit || (rb > max_unit && ra < rb)) parent[rb] = ra;
+    if (ra == rb) continue;
+    const bool a_first = ra <= max_unit ? (rb > max_unit || ra < rb) : (rb > max_unit && ra < rb);
+    if (a_first) parent[rb] = ra;
     else parent[ra] = rb;
   }
   if (parent.empty()) return;
   for (int r = 0; r < label.rows; ++r)
     for (int c = 0; c < label.cols; ++c)
-      if (label(r, c) > max_unit) label(r, c) = static_cast<std::uint16_t>(find(label(r, c)));
+      if (label(r, c) != 0) label(r, c) = static_cast<std::uint16_t>(find(label(r, c)));
 }
 
 // Furniture is part of its room (the benchmark's ground truth, and a robot's map, count the
@@ -217,7 +321,8 @@ cv::Mat1w render_segmentation(const ClassGrid& grid, const WorldResult& w) {
       queue.emplace_back(nr, nc);
     }
   }
-  merge_open_spaces(w, label);
+  label_unreached_components(grid, w.map.resolution, label);
+  merge_open_spaces(grid, w, label);
   split_at_wall_gaps(grid, w.map.resolution, label);
   fill_furniture(grid, w, label);
   return label;

@@ -18,11 +18,16 @@
 //     the unit reached first in row-major seed order, so the result is deterministic). The
 //     search moves only between edge-adjacent free cells, so it never leaks through the
 //     diagonal gap between two wall pixels that touch at a corner;
-//   * free cells with no path to any unit (a free component without a unit or space) stay 0;
-//   * a new space that meets another segment over more than 2 m of free cells (4-neighbour
-//     pairs) is one space with it (the `@one_space` rule's 2 m): furniture cutting a room's
-//     core in pieces, or a unit covering part of a room open to it. Widest contact first; two
-//     units are never joined;
+//   * a free component no unit or space reaches (a room narrower than 1.2 m or too small for
+//     a core, behind a wall) is a space of its own when it is at least 0.25 m^2; smaller ones
+//     (scan speckle) stay 0;
+//   * two segments that meet over more than 2 m of free cells (4-neighbour pairs) are one
+//     space (the `@one_space` rule's 2 m): furniture cutting a room's core in pieces, or a unit
+//     covering part of a room open to it. Two units are joined only when, besides, more than
+//     0.5 m of that contact lies over 0.6 m from every wall, the wall runs (at most 0.4 m
+//     thick) between them are at most a quarter of the contact, and the smaller is under
+//     20 m^2: a sliver or a corridor piece, not a room beside a wide opening. Widest contact
+//     first;
 //   * a segment that a straight wall line with a gap (at most 3 m) crosses is two spaces: an
 //     office open to its corridor over 2-3 m between wall stubs gets its own id
 //     (split_at_wall_gaps, wall_gap_cuts.h);
