@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "runtime/io/atomic_file.h"
+#include "stdlib/indoor/io/label_placement.h"
 #include "stdlib/indoor/io/type_style.h"
 #include "stdlib/indoor/io/world_json.h"
 
@@ -159,11 +160,19 @@ cv::Mat3b render_overlay(const ClassGrid& grid, const WorldResult& w) {
   // Type letter and id at the centres (R12), sized to the image.
   const double font = std::max(0.5, longest / 1000.0);
   const int thick = std::max(2, static_cast<int>(std::lround(font * 2.0)));
+  // Labels whose boxes would overlap move apart (label_placement.h).
+  std::vector<std::string> texts;
+  std::vector<cv::Point> wanted;
+  std::vector<cv::Size> sizes;
   for (const auto& u : w.units) {
     if (!drawable(u)) continue;
-    label(img, type_letter(w.types, u.type) + std::to_string(u.id), centre_px(unit_centre(u), s), font, thick,
-          cv::Scalar(120, 40, 0));
+    texts.push_back(type_letter(w.types, u.type) + std::to_string(u.id));
+    wanted.push_back(centre_px(unit_centre(u), s));
+    int base_line = 0;
+    sizes.push_back(cv::getTextSize(texts.back(), cv::FONT_HERSHEY_SIMPLEX, font, thick + 3, &base_line));
   }
+  const std::vector<cv::Point> at = place_labels(wanted, sizes, std::max(1, thick / 2));
+  for (std::size_t i = 0; i < texts.size(); ++i) label(img, texts[i], at[i], font, thick, cv::Scalar(120, 40, 0));
   return with_legend(img, w, font, std::max(1, thick / 2));
 }
 
