@@ -7,7 +7,7 @@ set -euo pipefail
 bin=$1; make_plans=$2; scorer=$3; out=$4; count=${5:-12}; iters=${6:-10000}
 mkdir -p "$out"
 "$make_plans" --count "$count" --seed "${SEED:-1}" --out "$out/plans" > "$out/plans.log"
-printf '| plan | unit P | unit R | type acc | door P | door R | door F1 | adj F1 | door-graph F1 | topology F1 | K true | K found | seconds |\n'
+printf '| plan | unit P | unit R | type acc | door P | door R | door F1 | adj F1 | door-graph F1 | topology F1 | units true | units found | seconds |\n'
 printf '|---|---|---|---|---|---|---|---|---|---|---|---|---|\n'
 rows=()
 for (( k = 0; k < count; k++ )); do

@@ -336,3 +336,41 @@ TEST_CASE("kernels decline on worlds they cannot change", "[indoor][kernels]") {
   KernelSet none(fx.evidence, KernelSources{}, params());
   CHECK_FALSE(none.propose(KernelKind::Add, empty, rng));
 }
+
+TEST_CASE("ALLOCATE does not stack a second door on a doorway the two units already have", "[indoor][kernels]") {
+  KernelFixture fx;
+  // The A-B doorway (x = 50, rows 22-28) detected again 0.3 cells across and 0.4 along, and a
+  // second doorway on the same wall (rows 32-36) that does not overlap it.
+  fx.door_cands.push_back({{50.3, 22.4}, {50.3, 28.4}, 0.9});
+  fx.door_cands.push_back({{50, 32}, {50, 36}, 0.9});
+  KernelSet ks(fx.evidence, fx.sources(), params());
+  World w = world_of({fx.unit(1, fx.rooms[0]), fx.unit(2, fx.rooms[1]), fx.unit(3, fx.rooms[2]),
+                      fx.unit(4, fx.rooms[3])});
+  const auto at = [](double x, double y) {
+    return [x, y](const Proposal& q) {
+      return std::abs(q.move.doors[0].after->a.x - x) < 1e-9 && std::abs(q.move.doors[0].after->a.y - y) < 1e-9;
+    };
+  };
+  // Before any door both A-B candidates are proposed.
+  REQUIRE(find(ks, KernelKind::Allocate, w, at(50.3, 22.4)));
+  const auto first = find(ks, KernelKind::Allocate, w, at(50.0, 22.0));
+  REQUIRE(first);
+  w.apply(first->move);
+  Rng rng(5);
+  int second = 0;
+  for (int i = 0; i < 400; ++i) {
+    const auto p = ks.propose(KernelKind::Allocate, w, rng);
+    if (!p) continue;
+    const Door& d = *p->move.doors[0].after;
+    CHECK(!(std::abs(d.a.x - 50.3) < 1e-9 && std::abs(d.a.y - 22.4) < 1e-9));  // the copy, never
+    if (std::abs(d.a.y - 32.0) < 1e-9) ++second;
+  }
+  CHECK(second > 0);  // another doorway of the same two units still is
+  // The copy's density is 0 in this world, in the forward and the reverse evaluation alike.
+  Move copy;
+  copy.kind = KernelKind::Allocate;
+  copy.doors.push_back({99, std::nullopt, fx.evidence.make_door(99, 1, 2, {50.3, 22.4}, {50.3, 28.4})});
+  CHECK(ks.log_q(KernelKind::Allocate, w, copy) == -std::numeric_limits<double>::infinity());
+  check_round_trip(ks, KernelKind::Allocate, w);
+  check_round_trip(ks, KernelKind::Delete, w);
+}
