@@ -49,13 +49,12 @@ bool along_doorway(const Context& c, const Door& d, Point2 a, Point2 b) {
   return std::min(len, std::max(ta, tb)) - std::max(0.0, std::min(ta, tb)) > 0.0;
 }
 
-// A door at a-b joining `units` is not proposed when a door already lies there: the same
-// segment, or a door of the same two units along the same doorway (one doorway, one door).
-bool already_assigned(const Context& c, const World& w, Point2 a, Point2 b, std::pair<UnitId, UnitId> units) {
-  for (const Door& d : w.doors()) {
-    if (same_segment(c, d.a, d.b, a, b)) return true;
-    if (d.unit_a == units.first && d.unit_b == units.second && along_doorway(c, d, a, b)) return true;
-  }
+// A door at a-b is not proposed when a door already lies along the same doorway, whichever two
+// units it joins: one doorway, one door (a copy also came attached to a thin unit lying along
+// the wall beside the doorway).
+bool already_assigned(const Context& c, const World& w, Point2 a, Point2 b) {
+  for (const Door& d : w.doors())
+    if (same_segment(c, d.a, d.b, a, b) || along_doorway(c, d, a, b)) return true;
   return false;
 }
 
@@ -92,8 +91,9 @@ std::optional<Forward> propose_allocate(const Context& c, const World& w, Rng& r
   const auto i = draw_weighted(v, rng);
   if (!i) return std::nullopt;
   const CandidateDoor& k = cands[*i];
+  if (already_assigned(c, w, k.a, k.b)) return std::nullopt;
   const auto units = attach(c, w, k.a, k.b);
-  if (!units || already_assigned(c, w, k.a, k.b, *units)) return std::nullopt;
+  if (!units) return std::nullopt;
   const Door d = c.ev.make_door(w.next_door_id(), units->first, units->second, k.a, k.b);
   Forward f;
   f.move.kind = KernelKind::Allocate;
@@ -106,10 +106,9 @@ double log_q_allocate(const Context& c, const World& w, const Move& m) {
   if (!c.src.doors || !m.units.empty() || m.doors.size() != 1 || m.doors[0].before || !m.doors[0].after)
     return kNegInf;
   const Door& d = *m.doors[0].after;
-  if (w.find_door(d.id)) return kNegInf;
+  if (w.find_door(d.id) || already_assigned(c, w, d.a, d.b)) return kNegInf;
   const auto units = attach(c, w, d.a, d.b);
   if (!units || units->first != d.unit_a || units->second != d.unit_b) return kNegInf;
-  if (already_assigned(c, w, d.a, d.b, *units)) return kNegInf;
   const auto cands = c.src.doors(w);
   return log_door_mass(c, cands, door_candidate_weights(cands), d.a, d.b);
 }
