@@ -38,10 +38,10 @@ bool same_segment(const Context& c, Point2 a, Point2 b, Point2 p, Point2 q) {
 // cell apart; without this the chain stacked copies of one doorway (a copy slightly off covers
 // a few cells the first does not): 21 doors for 4 doorways on a synthetic plan.
 bool along_doorway(const Context& c, const Door& d, Point2 a, Point2 b) {
-  const double len = distance(d.a, d.b);
-  if (!(len > 0.0) || !(distance(a, b) > 0.0)) return false;
+  const double len = distance(d.a, d.b), len_ab = distance(a, b);
+  if (!(len > 0.0) || !(len_ab > 0.0)) return false;
   const double ux = (d.b.x - d.a.x) / len, uy = (d.b.y - d.a.y) / len;
-  const double vx = (b.x - a.x) / distance(a, b), vy = (b.y - a.y) / distance(a, b);
+  const double vx = (b.x - a.x) / len_ab, vy = (b.y - a.y) / len_ab;
   if (std::abs(ux * vy - uy * vx) > std::sin(c.p.door_angle)) return false;
   const Point2 mid{(a.x + b.x) / 2.0, (a.y + b.y) / 2.0};
   if (std::abs((mid.x - d.a.x) * uy - (mid.y - d.a.y) * ux) > 2.0 * c.p.door_snap) return false;

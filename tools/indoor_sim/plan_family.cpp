@@ -7,14 +7,11 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "tools/indoor_sim/truth_result.h"
+
 namespace ksmc::tools::indoor_sim {
 
-using stdlib::indoor::Point2;
-using stdlib::indoor::io::classify_image;
-using stdlib::indoor::io::count_classes;
 using stdlib::indoor::io::DoorResult;
-using stdlib::indoor::io::Thresholds;
-using stdlib::indoor::io::UnitResult;
 
 namespace {
 
@@ -204,22 +201,13 @@ SimFloorPlan make_plan(std::uint64_t seed) {
   }
 
   WorldResult& w = out.truth;
-  w.map.source = "plan.pgm";
-  w.map.width = width;
-  w.map.height = height;
-  w.map.resolution = kRes;
-  w.map.counts = count_classes(classify_image(out.image, Thresholds{}));
+  w.map = truth_map_info(out.image, kRes, "plan.pgm");
   for (std::size_t i = 0; i < b.units.size(); ++i) {
     const Rect& r = b.units[i].r;
-    UnitResult u;
-    u.id = static_cast<int>(i) + 1;
-    u.type = b.units[i].type;
-    u.type_probs[u.type] = 1.0;
-    u.corners = {Point2{double(r.x0), double(r.y0)}, Point2{double(r.x1), double(r.y0)},
-                 Point2{double(r.x1), double(r.y1)}, Point2{double(r.x0), double(r.y1)}};
-    w.units.push_back(u);
+    const int id = static_cast<int>(i) + 1;
+    w.units.push_back(axis_unit(id, b.units[i].type, r.x0, r.y0, r.x1, r.y1));
     for (std::size_t j = 0; j < i; ++j) {
-      if (shares_wall(b.units[j].r, r)) w.adjacent.emplace_back(static_cast<int>(j) + 1, u.id);
+      if (shares_wall(b.units[j].r, r)) w.adjacent.emplace_back(static_cast<int>(j) + 1, id);
     }
   }
   std::sort(w.adjacent.begin(), w.adjacent.end());
@@ -229,9 +217,7 @@ SimFloorPlan make_plan(std::uint64_t seed) {
     dr.id = static_cast<int>(i) + 1;
     dr.unit_a = std::min(d.a, d.b);
     dr.unit_b = std::max(d.a, d.b);
-    const double e = d.from + d.width - 1;
-    dr.segment = d.horizontal ? std::array<Point2, 2>{Point2{double(d.from), double(d.at)}, Point2{e, double(d.at)}}
-                              : std::array<Point2, 2>{Point2{double(d.at), double(d.from)}, Point2{double(d.at), e}};
+    dr.segment = axis_door_segment(d.horizontal, d.at, d.from, d.width);
     w.doors.push_back(dr);
   }
   return out;

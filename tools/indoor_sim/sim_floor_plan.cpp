@@ -8,14 +8,11 @@
 #include <fmt/format.h>
 #include <opencv2/imgproc.hpp>
 
+#include "tools/indoor_sim/truth_result.h"
+
 namespace ksmc::tools::indoor_sim {
 
-using stdlib::indoor::Point2;
-using stdlib::indoor::io::classify_image;
-using stdlib::indoor::io::count_classes;
 using stdlib::indoor::io::DoorResult;
-using stdlib::indoor::io::Thresholds;
-using stdlib::indoor::io::UnitResult;
 
 namespace {
 
@@ -154,20 +151,11 @@ SimFloorPlan make_sim_office(std::uint64_t seed) {
   }
 
   WorldResult& w = out.truth;
-  w.map.source = "sim_office.pgm";
-  w.map.width = kWidth;
-  w.map.height = kHeight;
-  w.map.resolution = out.resolution;
-  w.map.counts = count_classes(classify_image(out.image, Thresholds{}));
+  w.map = truth_map_info(out.image, out.resolution, "sim_office.pgm");
   int id = 0;
   for (const auto& [r, type] : units) {
-    UnitResult u;
-    u.id = ++id;
-    u.type = type;
-    u.type_probs[type] = 1.0;
-    u.corners = {Point2{double(r.x0), double(r.y0)}, Point2{double(r.x1), double(r.y0)},
-                 Point2{double(r.x1), double(r.y1)}, Point2{double(r.x0), double(r.y1)}};
-    w.units.push_back(u);
+    ++id;
+    w.units.push_back(axis_unit(id, type, r.x0, r.y0, r.x1, r.y1));
   }
   id = 0;
   for (const auto& d : doors) {
@@ -175,11 +163,7 @@ SimFloorPlan make_sim_office(std::uint64_t seed) {
     dr.id = ++id;
     dr.unit_a = d.a;
     dr.unit_b = d.b;
-    if (d.horizontal) {
-      dr.segment = {Point2{double(d.from), double(d.at)}, Point2{double(d.from + kDoor - 1), double(d.at)}};
-    } else {
-      dr.segment = {Point2{double(d.at), double(d.from)}, Point2{double(d.at), double(d.from + kDoor - 1)}};
-    }
+    dr.segment = axis_door_segment(d.horizontal, d.at, d.from, kDoor);
     w.doors.push_back(dr);
   }
   w.adjacent = adjacent;
