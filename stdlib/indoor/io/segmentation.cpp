@@ -14,6 +14,7 @@
 
 #include "runtime/io/atomic_file.h"
 #include "stdlib/indoor/io/quad.h"
+#include "stdlib/indoor/io/thin_walls.h"  // kMaxWallThickness
 #include "stdlib/indoor/io/wall_gap_cuts.h"
 #include "stdlib/indoor/io/world_images.h"
 #include "stdlib/indoor/io/world_json.h"
@@ -128,7 +129,6 @@ void label_unreached_components(const ClassGrid& grid, double resolution, cv::Ma
 constexpr double kOpenJoin = 2.0;           // m of free contact
 constexpr double kOpenCore = 0.5;           // m of contact in open_core, for two units
 constexpr double kWallShare = 0.25;         // wall runs / free contact pairs, for two units
-constexpr double kMaxWallThickness = 0.4;   // m
 constexpr double kMaxJoinedPiece = 20.0;    // m^2, for two units
 
 using PairCount = std::map<std::pair<int, int>, long>;  // (smaller, larger id) -> count

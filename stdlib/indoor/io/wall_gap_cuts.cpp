@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "stdlib/indoor/cell.h"
+#include "stdlib/indoor/io/thin_walls.h"
 
 namespace ksmc::stdlib::indoor::io {
 
@@ -15,8 +16,8 @@ namespace {
 
 constexpr double kMaxGap = 3.0;            // m: an open office front (a door is up to 1.2 m)
 constexpr double kWallRun = 0.3;           // m of wall beyond each end, along the gap's line
-constexpr double kMaxWallThickness = 0.4;  // m across the line: a wall, not a block
 constexpr double kMinPiece = 1.0;          // m^2: a piece that is a space of its own
+constexpr double kMaxEndGap = 1.4;         // m from a thin wall's end to the wall it points at: a door (1.2 m) and the Hough end's slack, under a corridor's width
 
 struct Cuts {
   const ClassGrid& grid;
@@ -70,6 +71,97 @@ struct Cuts {
       }
     }
   }
+
+  // The cell under point p of a line (cell centres at whole coordinates), or {-1, -1} outside.
+  std::pair<int, int> cell_at(Point2 p) const {
+    const int r = static_cast<int>(std::lround(p.y)), c = static_cast<int>(std::lround(p.x));
+    if (r < 0 || c < 0 || r >= grid.rows || c >= grid.cols) return {-1, -1};
+    return {r, c};
+  }
+  // Marks the free cells of `line` between t0 and t1 (t0 < t1) as cut, when every cell on the way
+  // is a free, labelled cell; occupied cells only within 2 cells of either end (the wall ends
+  // themselves): a gap that holds another wall (a corridor between two partitions) is no cut.
+  bool cut_between(const WallLine& line, double t0, double t1) {
+    std::vector<std::pair<int, int>> cells;
+    for (double t = t0; t <= t1; t += 0.5) {
+      const auto [r, c] = cell_at(line.at(t));
+      if (r < 0) return false;
+      if (occupied(r, c)) {
+        if (t - t0 > 2.0 && t1 - t > 2.0) return false;
+        continue;
+      }
+      if (grid(r, c) != static_cast<std::uint8_t>(Cell::Free) || label(r, c) == 0) return false;
+      cells.emplace_back(r, c);
+    }
+    for (const auto& [r, c] : cells) cut(r, c) = 1;
+    return !cells.empty();
+  }
+  // Whether the wall line ends in a junction at t (its end, facing `sign`): a wall across the
+  // line, beyond the line's own half thickness (measured `back` cells before the end), from 2
+  // cells before t through the wall's last occupied cells. A partition meeting a corridor wall
+  // ends in a junction; one that ends at a doorway does not.
+  bool junction(const WallLine& line, double t, int sign, double back) const {
+    const Point2 n{-line.dir.y, line.dir.x};
+    double half = 1.0;
+    const Point2 q = line.at(t - sign * back);
+    for (const int side : {-1, 1})
+      for (int k = 1; k <= 10; ++k) {
+        const auto [r, c] = cell_at({q.x + side * k * n.x, q.y + side * k * n.y});
+        if (r < 0 || !occupied(r, c)) break;
+        half = std::max(half, static_cast<double>(k));
+      }
+    const auto across = [&](Point2 p) {
+      const auto [r1, c1] = cell_at({p.x + (half + 2.0) * n.x, p.y + (half + 2.0) * n.y});
+      const auto [r2, c2] = cell_at({p.x - (half + 2.0) * n.x, p.y - (half + 2.0) * n.y});
+      return r1 >= 0 && r2 >= 0 && occupied(r1, c1) && occupied(r2, c2);
+    };
+    for (double s = t - 2.0 * sign; sign * (t - s) > 0.0; s += 0.5 * sign)
+      if (across(line.at(s))) return true;
+    for (double s = t; std::abs(s - t) < 4.0; s += 0.5 * sign) {
+      const Point2 p = line.at(s);
+      const auto [r, c] = cell_at(p);
+      if (r < 0 || !occupied(r, c)) break;
+      if (across(p)) return true;
+    }
+    return false;
+  }
+  // From the free end t of a thin wall line, in direction `sign`: past the wall's last occupied
+  // cells, a run of free, labelled cells of at most `max_free` that ends at an occupied cell is
+  // a doorway between this wall's end and the wall it points at.
+  void cut_beyond(const WallLine& line, double t, int sign, double max_free) {
+    double s = t;
+    for (int k = 0; k < 8; ++k, s += 0.5 * sign) {  // the wall's own end cells
+      const auto [r, c] = cell_at(line.at(s));
+      if (r < 0) return;
+      if (!occupied(r, c)) break;
+    }
+    const double start = s;
+    for (; std::abs(s - start) <= max_free; s += 0.5 * sign) {
+      const auto [r, c] = cell_at(line.at(s));
+      if (r < 0) return;
+      if (occupied(r, c)) {
+        if (std::abs(s - start) >= 1.0) cut_between(line, std::min(start, s), std::max(start, s));
+        return;
+      }
+      if (grid(r, c) != static_cast<std::uint8_t>(Cell::Free) || label(r, c) == 0) return;
+    }
+  }
+  // Thin wall lines: the gaps between the pieces of one line (up to max_gap) and the doorway
+  // beyond each of its two ends (up to max_end cells) are cuts, where the wall ends free (not in
+  // a junction). `metre`: cells per metre.
+  void cut_lines(const std::vector<WallLine>& lines, double max_end, double metre) {
+    for (const WallLine& line : lines) {
+      const auto& iv = line.covered;
+      // The wall's thickness is measured 0.5 m back from an end (less on a short line).
+      const double back = std::min(0.5 * metre, 0.5 * (iv.back().second - iv.front().first));
+      const auto free_end = [&](double t, int sign) { return !junction(line, t, sign, back); };
+      for (std::size_t k = 1; k < iv.size(); ++k)
+        if (iv[k].first - iv[k - 1].second <= max_gap && free_end(iv[k - 1].second, +1) && free_end(iv[k].first, -1))
+          cut_between(line, iv[k - 1].second, iv[k].first);
+      if (free_end(iv.front().first, -1)) cut_beyond(line, iv.front().first, -1, max_end);
+      if (free_end(iv.back().second, +1)) cut_beyond(line, iv.back().second, +1, max_end);
+    }
+  }
 };
 
 }  // namespace
@@ -81,6 +173,7 @@ void split_at_wall_gaps(const ClassGrid& grid, double resolution, cv::Mat1w& lab
             static_cast<int>(std::lround(kMaxGap / res)), cv::Mat1b(grid.rows, grid.cols, static_cast<std::uint8_t>(0))};
   cuts.scan(0, 1);
   cuts.scan(1, 0);
+  cuts.cut_lines(thin_wall_lines(grid, res), kMaxEndGap / res, 1.0 / res);
   // 4-connected pieces of each segment without its cut cells.
   cv::Mat1i piece(label.rows, label.cols, -1);
   std::vector<long> area;

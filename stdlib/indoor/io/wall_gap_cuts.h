@@ -15,6 +15,17 @@
 // (above every id in use), and the cut cells and small pieces go to the nearest large piece of
 // their segment through the segment's cells. A segment with fewer than two large pieces is
 // unchanged, so a cut that does not separate a space (a gap between two tables) changes nothing.
+//
+// Thin walls at any angle (thin_walls.h: partitions at most 0.4 m thick with free space on both
+// sides, found as Hough lines, so one-cell walls drawn slightly off the grid axes count) give
+// cuts too (docs/indoor_knowledge.md, "Partitions with wide openings"):
+//   * the gap between two pieces of one wall line, up to kMaxGap, when it holds only free,
+//     labelled cells (a corridor with its own walls between two collinear partitions is no gap);
+//   * beyond a wall line's free end, the free, labelled run along the line up to kMaxEndGap
+//     (1.4 m: a door of up to 1.2 m and the slack of a Hough end; less than a corridor is wide)
+//     to the first occupied cell: the doorway between a
+//     partition's end and the wall it points at. A line that ends in a junction (a wall across
+//     it within 2 cells of its end) has no free end there.
 #pragma once
 
 #include <opencv2/core/mat.hpp>
