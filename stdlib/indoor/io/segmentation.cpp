@@ -13,6 +13,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "runtime/io/atomic_file.h"
+#include "stdlib/indoor/io/doorway_spaces.h"
 #include "stdlib/indoor/io/quad.h"
 #include "stdlib/indoor/io/thin_walls.h"  // kMaxWallThickness
 #include "stdlib/indoor/io/wall_gap_cuts.h"
@@ -304,6 +305,7 @@ cv::Mat1w render_segmentation(const ClassGrid& grid, const WorldResult& w) {
     for (int c = 0; c < grid.cols; ++c)
       if (const int o = owner(r, c); o >= 0) label(r, c) = static_cast<std::uint16_t>(w.units[static_cast<std::size_t>(o)].id);
   seed_uncovered_spaces(grid, w, label);
+  const cv::Mat1b explained = label != 0;
   // Multi-source BFS over 4-connected free cells from every labelled cell, row-major order.
   std::deque<std::pair<int, int>> queue;
   for (int r = 0; r < grid.rows; ++r)
@@ -321,6 +323,7 @@ cv::Mat1w render_segmentation(const ClassGrid& grid, const WorldResult& w) {
       queue.emplace_back(nr, nc);
     }
   }
+  detach_spaces_behind_doorways(grid, w.map.resolution, explained, label);
   label_unreached_components(grid, w.map.resolution, label);
   merge_open_spaces(grid, w, label);
   split_at_wall_gaps(grid, w.map.resolution, label);
