@@ -4,21 +4,16 @@
 #include <catch2/catch.hpp>
 
 #include "stdlib/indoor/io/segmentation.h"
+#include "tests/indoor_io/axis_unit.h"
 
 using namespace ksmc::stdlib::indoor;
 using namespace ksmc::stdlib::indoor::io;
+using ksmc::tests::indoor_io::unit;
 
 namespace {
 
 constexpr auto kFree = static_cast<std::uint8_t>(Cell::Free);
 constexpr auto kOcc = static_cast<std::uint8_t>(Cell::Occupied);
-
-UnitResult unit(int id, double x0, double y0, double x1, double y1) {
-  UnitResult u;
-  u.id = id;
-  u.corners = {Point2{x0, y0}, Point2{x1, y0}, Point2{x1, y1}, Point2{x0, y1}};
-  return u;
-}
 
 // Two offices (rows 2..61, cols 2..79 and 82..161, a wall at cols 80-81 between them) above a
 // 1 m corridor (rows 64..83) behind a wall at rows 62-63, each office with a 1 m door (cols

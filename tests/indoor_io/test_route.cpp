@@ -4,18 +4,13 @@
 
 #include "stdlib/indoor/io/map_frame.h"
 #include "stdlib/indoor/io/route.h"
+#include "tests/indoor_io/axis_unit.h"
 
 using namespace ksmc::stdlib::indoor;
 using namespace ksmc::stdlib::indoor::io;
+using ksmc::tests::indoor_io::unit;
 
 namespace {
-
-UnitResult unit(int id, double x0, double y0, double x1, double y1) {
-  UnitResult u;
-  u.id = id;
-  u.corners = {Point2{x0, y0}, Point2{x1, y0}, Point2{x1, y1}, Point2{x0, y1}};
-  return u;
-}
 
 // Three rooms in a row (1 | 2 | 3), doors 1-2 and 2-3, a long way round through a corridor 5
 // (doors 1-5 and 5-3), and a room 4 without doors.

@@ -11,9 +11,11 @@
 
 #include "stdlib/indoor/io/segmentation.h"
 #include "tests/indoor_io/temp_dir.h"
+#include "tests/indoor_io/axis_unit.h"
 
 using namespace ksmc::stdlib::indoor;
 using namespace ksmc::stdlib::indoor::io;
+using ksmc::tests::indoor_io::unit;
 
 namespace {
 
@@ -28,13 +30,6 @@ ClassGrid tiny_map() {
   g(2, 8) = static_cast<std::uint8_t>(Cell::Unknown);
   g(1, 12) = g(2, 12) = static_cast<std::uint8_t>(Cell::Free);
   return g;
-}
-
-UnitResult unit(int id, double x0, double y0, double x1, double y1) {
-  UnitResult u;
-  u.id = id;
-  u.corners = {Point2{x0, y0}, Point2{x1, y0}, Point2{x1, y1}, Point2{x0, y1}};
-  return u;
 }
 
 }  // namespace

@@ -7,9 +7,11 @@
 
 #include "stdlib/indoor/io/segmentation.h"
 #include "stdlib/indoor/io/thin_walls.h"
+#include "tests/indoor_io/axis_unit.h"
 
 using namespace ksmc::stdlib::indoor;
 using namespace ksmc::stdlib::indoor::io;
+using ksmc::tests::indoor_io::unit;
 
 namespace {
 
@@ -29,13 +31,6 @@ ClassGrid walled(int rows, int cols) {
 void slanted_partition(ClassGrid& g, int r0, int r1, int g0 = -1, int g1 = -2) {
   for (int r = r0; r <= r1; ++r)
     if (r < g0 || r > g1) g(r, 80 + (r - 2) / 10) = kOcc;
-}
-
-UnitResult unit(int id, double x0, double y0, double x1, double y1) {
-  UnitResult u;
-  u.id = id;
-  u.corners = {Point2{x0, y0}, Point2{x1, y0}, Point2{x1, y1}, Point2{x0, y1}};
-  return u;
 }
 
 WorldResult one_unit_over(const ClassGrid& g) {
