@@ -18,6 +18,10 @@
 //     the unit reached first in row-major seed order, so the result is deterministic). The
 //     search moves only between edge-adjacent free cells, so it never leaks through the
 //     diagonal gap between two wall pixels that touch at a corner;
+//   * free space the search reached only through a doorway is a space of its own: a
+//     component of searched cells (one label, at least 1 m^2) whose contact with the cells
+//     its unit or space explains is at most 1.2 m gets a new id, touching ones the same id
+//     (a corridor no unit covers, too narrow for a core; doorway_spaces.h);
 //   * a free component no unit or space reaches (a room narrower than 1.2 m or too small for
 //     a core, behind a wall) is a space of its own when it is at least 0.25 m^2; smaller ones
 //     (scan speckle) stay 0;
@@ -29,8 +33,9 @@
 //     20 m^2: a sliver or a corridor piece, not a room beside a wide opening. Widest contact
 //     first;
 //   * a segment that a straight wall line with a gap (at most 3 m) crosses is two spaces: an
-//     office open to its corridor over 2-3 m between wall stubs gets its own id
-//     (split_at_wall_gaps, wall_gap_cuts.h);
+//     office open to its corridor over 2-3 m between wall stubs gets its own id; thin
+//     partitions at any angle cut at the gaps between their pieces and at the doorway (up to
+//     1.4 m) beyond a free end (split_at_wall_gaps, wall_gap_cuts.h, thin_walls.h);
 //   * an occupied 8-connected blob of at most 4 m^2, off the map's edge, whose 4-neighbours are
 //     all free cells of one segment is furniture standing in that room: it gets the segment.
 #pragma once
