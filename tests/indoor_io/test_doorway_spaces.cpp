@@ -8,12 +8,11 @@
 
 using namespace ksmc::stdlib::indoor;
 using namespace ksmc::stdlib::indoor::io;
+using ksmc::tests::indoor_io::kFree;
+using ksmc::tests::indoor_io::kOcc;
 using ksmc::tests::indoor_io::unit;
 
 namespace {
-
-constexpr auto kFree = static_cast<std::uint8_t>(Cell::Free);
-constexpr auto kOcc = static_cast<std::uint8_t>(Cell::Occupied);
 
 // Two offices (rows 2..61, cols 2..79 and 82..161, a wall at cols 80-81 between them) above a
 // 1 m corridor (rows 64..83) behind a wall at rows 62-63, each office with a 1 m door (cols

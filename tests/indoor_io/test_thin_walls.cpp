@@ -11,12 +11,11 @@
 
 using namespace ksmc::stdlib::indoor;
 using namespace ksmc::stdlib::indoor::io;
+using ksmc::tests::indoor_io::kFree;
+using ksmc::tests::indoor_io::kOcc;
 using ksmc::tests::indoor_io::unit;
 
 namespace {
-
-constexpr auto kFree = static_cast<std::uint8_t>(Cell::Free);
-constexpr auto kOcc = static_cast<std::uint8_t>(Cell::Occupied);
 
 // A walled rectangle of free cells, rows 2..rows+1 and cols 2..cols+1, outer wall 2 cells.
 ClassGrid walled(int rows, int cols) {

@@ -81,20 +81,19 @@ struct Cuts {
   // Marks the free cells of `line` between t0 and t1 (t0 < t1) as cut, when every cell on the way
   // is a free, labelled cell; occupied cells only within 2 cells of either end (the wall ends
   // themselves): a gap that holds another wall (a corridor between two partitions) is no cut.
-  bool cut_between(const WallLine& line, double t0, double t1) {
+  void cut_between(const WallLine& line, double t0, double t1) {
     std::vector<std::pair<int, int>> cells;
     for (double t = t0; t <= t1; t += 0.5) {
       const auto [r, c] = cell_at(line.at(t));
-      if (r < 0) return false;
+      if (r < 0) return;
       if (occupied(r, c)) {
-        if (t - t0 > 2.0 && t1 - t > 2.0) return false;
+        if (t - t0 > 2.0 && t1 - t > 2.0) return;
         continue;
       }
-      if (grid(r, c) != static_cast<std::uint8_t>(Cell::Free) || label(r, c) == 0) return false;
+      if (grid(r, c) != static_cast<std::uint8_t>(Cell::Free) || label(r, c) == 0) return;
       cells.emplace_back(r, c);
     }
     for (const auto& [r, c] : cells) cut(r, c) = 1;
-    return !cells.empty();
   }
   // Whether the wall line ends in a junction at t (its end, facing `sign`): a wall across the
   // line, beyond the line's own half thickness (measured `back` cells before the end), from 2
