@@ -44,7 +44,8 @@ expect() {
   esac
   # No staging folder or temporary file may stay beside the output.
   # (Except after SIGKILL, which leaves its hidden staging folder for the next run to remove.)
-  if [ "$dir" != "-" ] && [ "$code" -ne 137 ] && ls -a "$(dirname "$dir")" | grep -qE "^\.$(basename "$dir")\.(staging|old)-|\.tmp\."; then
+  if [ "$dir" != "-" ] && [ "$code" -ne 137 ] \
+     && grep -qE "^\.$(basename "$dir")\.(staging|old)-|\.tmp\." <<< "$(ls -a "$(dirname "$dir")")"; then
     ok=0
     why="$why; a staging folder or temporary file is left"
   fi
