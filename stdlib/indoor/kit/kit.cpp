@@ -23,6 +23,7 @@
 #include "stdlib/indoor/io/route.h"
 #include "stdlib/indoor/io/world_writer.h"
 #include "stdlib/indoor/kit/indoor_model.h"
+#include "stdlib/indoor/kit/unsupported_units.h"
 #include "stdlib/indoor/kit/solid_interior.h"
 #include "stdlib/indoor/blocks/walls.h"
 
@@ -107,6 +108,18 @@ io::WorldResult make_result(IndoorModel& m, const io::OccupancyMap& map, const s
         r.adjacent.emplace_back(static_cast<int>(units[i].id), static_cast<int>(units[j].id));
   const double secs = run.seconds;
   r.metrics["cell_prediction_rate"] = m.scored().cell_prediction_rate();
+  // Where K's misses are: cells by observed class and predicted class (the diagonal is K's
+  // numerator), e.g. cells_occupied_predicted_free = furniture and clutter inside units.
+  const Histogram h = m.scored().histogram();
+  const char* observed[] = {"free", "unknown", "occupied"};
+  const char* predicted[] = {"free", "unknown", "wall"};
+  for (int o = 0; o < 3; ++o)
+    for (int p = 0; p < 3; ++p) {
+      std::int64_t n = 0;
+      for (int k = 0; k < kMaxLutClasses; ++k)
+        n += h[static_cast<std::size_t>(histogram_index(k, static_cast<Cell>(o), static_cast<Predicted>(p)))];
+      r.metrics[std::string("cells_") + observed[o] + "_predicted_" + predicted[p]] = static_cast<double>(n);
+    }
   r.metrics["iterations"] = static_cast<double>(run.iterations);
   r.metrics["seconds"] = secs;
   r.metrics["iterations_per_second"] = secs > 0.0 ? static_cast<double>(run.iterations) / secs : 0.0;
@@ -287,8 +300,12 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
   if (in.flags.given("path")) route = parse_path(in.flags.text("path"), *map);
   setup.write_results = [map, source, route](const mcmc::RunResult& run, mcmc::Model& best, cli::OutputDir& out) {
     auto& m = static_cast<IndoorModel&>(best);
+    auto posterior = posterior_worlds(m, run);  // restores the best state when done
+    const RemovedUnits removed = remove_unsupported_units(m);
     io::WorldResult result = make_result(m, *map, source, run);
-    result.posterior = posterior_worlds(m, run);
+    result.posterior = std::move(posterior);
+    result.metrics["units_removed_after_run"] = static_cast<double>(removed.removed.size());
+    result.metrics["chain_best_log_posterior"] = removed.log_posterior_before;
     nlohmann::ordered_json path_json;
     if (route) {
       std::string error;
