@@ -7,6 +7,8 @@
 #include <algorithm>
 
 #include "runtime/mcmc/engine.h"
+#include "stdlib/indoor/kit/after_run.h"
+#include "stdlib/indoor/kit/merged_units.h"
 #include "stdlib/indoor/kit/unsupported_units.h"
 #include "tests/indoor/synthetic_map.h"
 #include "tests/indoor_kit/kit_fixture.h"
@@ -26,13 +28,6 @@ std::filesystem::path three_rooms() {
     return write_pgm(g, temp_dir("unsupported") / "plan.pgm");
   }();
   return p;
-}
-
-mcmc::Snapshot without_unit(mcmc::Snapshot s, UnitId id) {
-  auto& u = s["units"];
-  u.erase(std::remove_if(u.begin(), u.end(), [id](const mcmc::Snapshot& x) { return x.at("id").get<UnitId>() == id; }),
-          u.end());
-  return s;
 }
 
 }  // namespace
@@ -60,19 +55,23 @@ TEST_CASE("indoor kit: door-less units the map does not support are removed afte
   const auto doorless = kit::doorless_units(m.scored().world());
   CHECK(std::find(doorless.begin(), doorless.end(), strip) != doorless.end());
 
-  const auto doors_before = m.scored().world().doors().size();
-  const kit::RemovedUnits r = kit::remove_unsupported_units(m);
+  const kit::AfterRunResult r = kit::improve_after_run(m);
   CHECK(r.log_posterior_before == with_strip);
   CHECK(std::find(r.removed.begin(), r.removed.end(), strip) != r.removed.end());
   CHECK(m.scored().world().find_unit(strip) == nullptr);
   CHECK(r.log_posterior_after > r.log_posterior_before);
   CHECK(m.log_posterior() == r.log_posterior_after);
-  CHECK(m.scored().world().doors().size() == doors_before);  // units with doors are never tried
 
-  // A local optimum: removing any door-less unit that is left lowers the log posterior.
+  // A local optimum: removing any door-less unit that is left, or any merge left, does not
+  // raise the log posterior.
   const mcmc::Snapshot kept = m.snapshot();
   for (const UnitId id : kit::doorless_units(m.scored().world())) {
-    m.restore(without_unit(kept, id));
+    m.restore(kit::without_unit(kept, id));
+    CHECK(m.log_posterior() <= r.log_posterior_after);
+  }
+  m.restore(kept);
+  for (const kit::MergeCandidate& c : kit::merge_candidates(m.scored().world(), m.input().grid)) {
+    m.restore(kit::with_merge(kept, c));
     CHECK(m.log_posterior() <= r.log_posterior_after);
   }
   m.restore(kept);
@@ -81,7 +80,45 @@ TEST_CASE("indoor kit: door-less units the map does not support are removed afte
   auto again = setup.model_factory(0);
   again->restore(planted);
   auto& m2 = static_cast<kit::IndoorModel&>(*again);
-  const kit::RemovedUnits r2 = kit::remove_unsupported_units(m2);
+  const kit::AfterRunResult r2 = kit::improve_after_run(m2);
   CHECK(r2.removed == r.removed);
+  CHECK(r2.merged == r.merged);
   CHECK(m2.snapshot() == kept);
+}
+
+TEST_CASE("indoor kit: a corridor in two pieces joined by a door is merged after the run; two rooms a wall divides are not", "[indoor_kit]") {
+  const auto sp = spec();
+  const auto setup = sp.load(input_for(sp, three_rooms(), 3, {{"resolution", "0.05"}}));
+  auto model = setup.model_factory(0);
+  auto& m = static_cast<kit::IndoorModel&>(*model);
+  // The plan's two rooms, and its corridor cut at x = 90 into two pieces joined by a door
+  // across the whole corridor: a state MERGE cannot undo (a door joins the two).
+  auto unit = [](UnitId id, double cx, double cy, double w, double h) {
+    return mcmc::Snapshot{{"id", id}, {"cx", cx}, {"cy", cy}, {"w", w}, {"h", h}, {"theta", 0.0}, {"lut", 0}};
+  };
+  mcmc::Snapshot s = mcmc::Snapshot::object();
+  s["units"] = {unit(1, 50, 40, 80, 60), unit(2, 130, 40, 80, 60), unit(3, 50, 85, 80, 30), unit(4, 130, 85, 80, 30)};
+  s["doors"] = {{{"id", 1}, {"a", 3}, {"b", 4}, {"ax", 90.0}, {"ay", 72.0}, {"bx", 90.0}, {"by", 98.0}}};
+  m.restore(s);
+
+  const auto candidates = kit::merge_candidates(m.scored().world(), m.input().grid);
+  auto has = [&](UnitId a, UnitId b) {
+    return std::any_of(candidates.begin(), candidates.end(), [&](const kit::MergeCandidate& c) { return c.a == a && c.b == b; });
+  };
+  CHECK(has(3, 4));
+  CHECK_FALSE(has(1, 2));  // the wall between the rooms: no candidate
+  CHECK_FALSE(has(1, 3));  // fill of their bounding rectangle below 90 %
+
+  const kit::AfterRunResult r = kit::improve_after_run(m);
+  REQUIRE(r.merged.size() == 1);
+  CHECK(r.merged[0] == std::make_pair(UnitId{3}, UnitId{4}));
+  CHECK(r.log_posterior_after > r.log_posterior_before);
+  const World& w = m.scored().world();
+  CHECK(w.units().size() == 3);
+  CHECK(w.doors().empty());  // the door between the pieces went with the seam
+  const auto corridor = std::find_if(w.units().begin(), w.units().end(), [](const Unit& u) { return u.id > 4; });
+  REQUIRE(corridor != w.units().end());
+  CHECK(corridor->rect.cx == Approx(90.0));
+  CHECK(corridor->rect.w == Approx(160.0));
+  CHECK(corridor->rect.h == Approx(30.0));
 }

@@ -22,8 +22,8 @@
 #include "stdlib/indoor/io/posterior_plot.h"
 #include "stdlib/indoor/io/route.h"
 #include "stdlib/indoor/io/world_writer.h"
+#include "stdlib/indoor/kit/after_run.h"
 #include "stdlib/indoor/kit/indoor_model.h"
-#include "stdlib/indoor/kit/unsupported_units.h"
 #include "stdlib/indoor/kit/solid_interior.h"
 #include "stdlib/indoor/blocks/walls.h"
 
@@ -301,11 +301,12 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
   setup.write_results = [map, source, route](const mcmc::RunResult& run, mcmc::Model& best, cli::OutputDir& out) {
     auto& m = static_cast<IndoorModel&>(best);
     auto posterior = posterior_worlds(m, run);  // restores the best state when done
-    const RemovedUnits removed = remove_unsupported_units(m);
+    const AfterRunResult after = improve_after_run(m);
     io::WorldResult result = make_result(m, *map, source, run);
     result.posterior = std::move(posterior);
-    result.metrics["units_removed_after_run"] = static_cast<double>(removed.removed.size());
-    result.metrics["chain_best_log_posterior"] = removed.log_posterior_before;
+    result.metrics["units_removed_after_run"] = static_cast<double>(after.removed.size());
+    result.metrics["units_merged_after_run"] = static_cast<double>(after.merged.size());
+    result.metrics["chain_best_log_posterior"] = after.log_posterior_before;
     nlohmann::ordered_json path_json;
     if (route) {
       std::string error;

@@ -18,32 +18,12 @@ std::vector<UnitId> doorless_units(const World& w) {
   return out;
 }
 
-RemovedUnits remove_unsupported_units(IndoorModel& m) {
-  RemovedUnits r;
-  r.log_posterior_before = m.log_posterior();
-  double best = r.log_posterior_before;
-  for (bool changed = true; changed;) {
-    changed = false;
-    const runtime::mcmc::Snapshot current = m.snapshot();
-    for (const UnitId id : doorless_units(m.scored().world())) {
-      runtime::mcmc::Snapshot without = current;
-      auto& units = without["units"];
-      units.erase(std::remove_if(units.begin(), units.end(),
-                                 [id](const runtime::mcmc::Snapshot& u) { return u.at("id").get<UnitId>() == id; }),
-                  units.end());
-      m.restore(without);  // full rescoring of the world without the unit
-      const double lp = m.log_posterior();
-      if (lp > best) {
-        best = lp;
-        r.removed.push_back(id);
-        changed = true;
-        break;
-      }
-      m.restore(current);
-    }
-  }
-  r.log_posterior_after = best;
-  return r;
+runtime::mcmc::Snapshot without_unit(runtime::mcmc::Snapshot s, UnitId id) {
+  auto& units = s["units"];
+  units.erase(std::remove_if(units.begin(), units.end(),
+                             [id](const runtime::mcmc::Snapshot& u) { return u.at("id").get<UnitId>() == id; }),
+              units.end());
+  return s;
 }
 
 }  // namespace ksmc::stdlib::indoor::kit

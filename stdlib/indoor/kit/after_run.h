@@ -1,0 +1,31 @@
+// After the run: a local search on the chain's own target, from the chain's best state.
+//
+// Two kinds of change the chain cannot make, whatever they would gain:
+//  - removing a door-less unit that no detector proposes (REMOVE's reverse is ADD, whose
+//    probability of proposing such a rectangle is 0): strips inside rooms, squares on walls
+//    (unsupported_units.h);
+//  - merging two units that nearly tile a rectangle but not exactly, or that a door joins
+//    (MERGE needs an exact tiling and declines a door between the two): a corridor in pieces
+//    with a door between each two (merged_units.h).
+// Each candidate world is fully rescored (likelihood, weak prior and knowledge: the chain's
+// target, IndoorModel::restore). The first candidate with a higher log posterior is taken and
+// the search starts again, until none is higher. The result is the better state under the one
+// target; a unit or a wall the map supports stays.
+#pragma once
+
+#include <vector>
+
+#include "stdlib/indoor/kit/indoor_model.h"
+
+namespace ksmc::stdlib::indoor::kit {
+
+struct AfterRunResult {
+  std::vector<UnitId> removed;                      // in order
+  std::vector<std::pair<UnitId, UnitId>> merged;    // in order
+  double log_posterior_before = 0.0;
+  double log_posterior_after = 0.0;
+};
+
+AfterRunResult improve_after_run(IndoorModel& m);
+
+}  // namespace ksmc::stdlib::indoor::kit

@@ -1,0 +1,114 @@
+#include "stdlib/indoor/kit/merged_units.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "stdlib/indoor/geometry.h"
+
+namespace ksmc::stdlib::indoor::kit {
+
+namespace {
+
+// Distance from p (in the box's frame) to the box's boundary.
+double to_boundary(const Box& b, Point2 p) {
+  const double dx = std::max({b.x0 - p.x, 0.0, p.x - b.x1}), dy = std::max({b.y0 - p.y, 0.0, p.y - b.y1});
+  if (dx > 0.0 || dy > 0.0) return std::hypot(dx, dy);
+  return std::min({p.x - b.x0, b.x1 - p.x, p.y - b.y0, b.y1 - p.y});
+}
+
+// Share of the seam between boxes a and b (in frame f) that has an occupied cell within
+// kMergeSeamReach across it; 0 when the boxes nest (no seam).
+double seam_wall_share(const Box& a, const Box& b, const Frame& f, const ClassGrid& observed) {
+  const double gap_x = std::max(a.x0, b.x0) - std::min(a.x1, b.x1);  // < 0: overlap along x
+  const double gap_y = std::max(a.y0, b.y0) - std::min(a.y1, b.y1);
+  const bool across_x = gap_x >= gap_y;  // the seam is a line x = const
+  // The seam's position and its extent along the other axis.
+  const double at = across_x ? 0.5 * (std::max(a.x0, b.x0) + std::min(a.x1, b.x1))
+                             : 0.5 * (std::max(a.y0, b.y0) + std::min(a.y1, b.y1));
+  const double lo = across_x ? std::max(a.y0, b.y0) : std::max(a.x0, b.x0);
+  const double hi = across_x ? std::min(a.y1, b.y1) : std::min(a.x1, b.x1);
+  const double overlap = across_x ? -gap_x : -gap_y;
+  const double a_len = across_x ? a.x1 - a.x0 : a.y1 - a.y0, b_len = across_x ? b.x1 - b.x0 : b.y1 - b.y0;
+  if (overlap >= 0.5 * std::min(a_len, b_len)) return 0.0;  // one lies over the other: no seam
+  int walled = 0, samples = 0;
+  for (double t = lo + 1.0; t <= hi - 1.0; t += 0.5) {
+    ++samples;
+    bool wall = false;
+    for (int k = -kMergeSeamReach; k <= kMergeSeamReach && !wall; ++k) {
+      const Point2 p = f.to_global(across_x ? Point2{at + k, t} : Point2{t, at + k});
+      const int r = static_cast<int>(std::floor(p.y)), c = static_cast<int>(std::floor(p.x));
+      wall = r >= 0 && c >= 0 && r < observed.rows && c < observed.cols &&
+             observed(r, c) == static_cast<std::uint8_t>(Cell::Occupied);
+    }
+    walled += wall ? 1 : 0;
+  }
+  return samples > 0 ? static_cast<double>(walled) / samples : 1.0;
+}
+
+}  // namespace
+
+std::vector<MergeCandidate> merge_candidates(const World& w, const ClassGrid& observed) {
+  std::vector<MergeCandidate> out;
+  const auto units = w.units();
+  for (const Unit& ua : units)
+    for (const Unit& ub : units) {
+      if (!(ua.id < ub.id)) continue;
+      const Frame f(ua.rect.theta);
+      const Box a = own_box(ua.rect);
+      const auto b = box_in_frame(ub.rect, f, kMergeAngleDeg * kPi / 180.0);
+      if (!b) continue;
+      const Box u{std::min(a.x0, b->x0), std::max(a.x1, b->x1), std::min(a.y0, b->y0), std::max(a.y1, b->y1)};
+      const double inter = std::max(0.0, std::min(a.x1, b->x1) - std::max(a.x0, b->x0)) *
+                           std::max(0.0, std::min(a.y1, b->y1) - std::max(a.y0, b->y0));
+      const double area = u.width() * u.height();
+      if (!(area > 0.0)) continue;
+      const double fill = (a.width() * a.height() + b->width() * b->height() - inter) / area;
+      if (fill < kMergeFill || seam_wall_share(a, *b, f, observed) > kMergeWallShare) continue;
+      const bool doors_fit = std::all_of(w.doors().begin(), w.doors().end(), [&](const Door& d) {
+        const bool in_a = d.unit_a == ua.id || d.unit_b == ua.id, in_b = d.unit_a == ub.id || d.unit_b == ub.id;
+        if (in_a == in_b) return true;  // joins the two (it goes), or neither
+        const Point2 mid{0.5 * (d.a.x + d.b.x), 0.5 * (d.a.y + d.b.y)};
+        return to_boundary(u, f.to_local(mid)) <= kMergeDoorSnap;
+      });
+      if (doors_fit) out.push_back({ua.id, ub.id, rect_from_box(u, f), fill});
+    }
+  std::sort(out.begin(), out.end(), [](const MergeCandidate& x, const MergeCandidate& y) {
+    if (x.fill != y.fill) return x.fill > y.fill;
+    return x.a != y.a ? x.a < y.a : x.b < y.b;
+  });
+  return out;
+}
+
+runtime::mcmc::Snapshot with_merge(runtime::mcmc::Snapshot s, const MergeCandidate& c) {
+  using runtime::mcmc::Snapshot;
+  auto& units = s["units"];
+  UnitId next = 0;
+  int lut = 0;
+  for (const Snapshot& u : units) {
+    const auto id = u.at("id").get<UnitId>();
+    next = std::max(next, id);
+    if (id == c.a) lut = u.at("lut").get<int>();
+  }
+  ++next;
+  auto is_pair = [&](UnitId id) { return id == c.a || id == c.b; };
+  units.erase(std::remove_if(units.begin(), units.end(),
+                             [&](const Snapshot& u) { return is_pair(u.at("id").get<UnitId>()); }),
+              units.end());
+  units.push_back({{"id", next}, {"cx", c.rect.cx}, {"cy", c.rect.cy}, {"w", c.rect.w}, {"h", c.rect.h},
+                   {"theta", c.rect.theta}, {"lut", lut}});
+  auto& doors = s["doors"];
+  Snapshot kept = Snapshot::array();
+  for (Snapshot d : doors) {
+    UnitId a = d.at("a").get<UnitId>(), b = d.at("b").get<UnitId>();
+    if (is_pair(a) && is_pair(b)) continue;
+    if (is_pair(a)) a = next;
+    if (is_pair(b)) b = next;
+    d["a"] = std::min(a, b);
+    d["b"] = std::max(a, b);
+    kept.push_back(std::move(d));
+  }
+  doors = std::move(kept);
+  return s;
+}
+
+}  // namespace ksmc::stdlib::indoor::kit
