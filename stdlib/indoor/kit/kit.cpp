@@ -1,6 +1,7 @@
 #include "stdlib/indoor/kit/kit.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -301,11 +302,14 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
   setup.write_results = [map, source, route](const mcmc::RunResult& run, mcmc::Model& best, cli::OutputDir& out) {
     auto& m = static_cast<IndoorModel&>(best);
     auto posterior = posterior_worlds(m, run);  // restores the best state when done
+    const auto search_start = std::chrono::steady_clock::now();
     const AfterRunResult after = improve_after_run(m);
+    const double search_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - search_start).count();
     io::WorldResult result = make_result(m, *map, source, run);
     result.posterior = std::move(posterior);
     result.metrics["units_removed_after_run"] = static_cast<double>(after.removed.size());
     result.metrics["units_merged_after_run"] = static_cast<double>(after.merged.size());
+    result.metrics["after_run_seconds"] = search_seconds;
     result.metrics["chain_best_log_posterior"] = after.log_posterior_before;
     nlohmann::ordered_json path_json;
     if (route) {
