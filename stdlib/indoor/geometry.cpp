@@ -1,5 +1,6 @@
 #include "stdlib/indoor/geometry.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace ksmc::stdlib::indoor {
@@ -34,6 +35,12 @@ OrientedRect rect_from_box(const Box& b, const Frame& frame) {
 Box own_box(const OrientedRect& r) {
   const Point2 c = Frame(r.theta).to_local({r.cx, r.cy});
   return Box{c.x - 0.5 * r.w, c.x + 0.5 * r.w, c.y - 0.5 * r.h, c.y + 0.5 * r.h};
+}
+
+double distance_to_boundary(const Box& b, Point2 p) {
+  const double dx = std::max({b.x0 - p.x, 0.0, p.x - b.x1}), dy = std::max({b.y0 - p.y, 0.0, p.y - b.y1});
+  if (dx > 0.0 || dy > 0.0) return std::hypot(dx, dy);
+  return std::min({p.x - b.x0, b.x1 - p.x, p.y - b.y0, b.y1 - p.y});
 }
 
 Box shift_box_wall(const Box& b, int wall, double delta) {

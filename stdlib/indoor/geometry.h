@@ -44,6 +44,9 @@ OrientedRect rect_from_box(const Box& b, const Frame& frame);
 // Box of the rectangle in its own frame (x along the w-axis, y along the h-axis).
 Box own_box(const OrientedRect& r);
 
+// Distance from p (in the box's frame) to the box's boundary, inside or outside.
+double distance_to_boundary(const Box& b, Point2 p);
+
 // Wall j of a rectangle is the edge from corner j to corner j+1 (see OrientedRect::corners):
 // 0 = y0 side, 1 = x1 side, 2 = y1 side, 3 = x0 side of its own box.
 // Moves wall j of the box outward (along its outer normal) by `delta` (negative = inward).

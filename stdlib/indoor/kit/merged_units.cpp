@@ -9,13 +9,6 @@ namespace ksmc::stdlib::indoor::kit {
 
 namespace {
 
-// Distance from p (in the box's frame) to the box's boundary.
-double to_boundary(const Box& b, Point2 p) {
-  const double dx = std::max({b.x0 - p.x, 0.0, p.x - b.x1}), dy = std::max({b.y0 - p.y, 0.0, p.y - b.y1});
-  if (dx > 0.0 || dy > 0.0) return std::hypot(dx, dy);
-  return std::min({p.x - b.x0, b.x1 - p.x, p.y - b.y0, b.y1 - p.y});
-}
-
 // Share of the seam between boxes a and b (in frame f) that has an occupied cell within
 // kMergeSeamReach across it; 0 when the boxes nest (no seam).
 double seam_wall_share(const Box& a, const Box& b, const Frame& f, const ClassGrid& observed) {
@@ -68,7 +61,7 @@ std::vector<MergeCandidate> merge_candidates(const World& w, const ClassGrid& ob
         const bool in_a = d.unit_a == ua.id || d.unit_b == ua.id, in_b = d.unit_a == ub.id || d.unit_b == ub.id;
         if (in_a == in_b) return true;  // joins the two (it goes), or neither
         const Point2 mid{0.5 * (d.a.x + d.b.x), 0.5 * (d.a.y + d.b.y)};
-        return to_boundary(u, f.to_local(mid)) <= kMergeDoorSnap;
+        return distance_to_boundary(u, f.to_local(mid)) <= kMergeDoorSnap;
       });
       if (doors_fit) out.push_back({ua.id, ub.id, rect_from_box(u, f), fill});
     }
