@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "stdlib/indoor/geometry.h"
 
@@ -24,7 +25,10 @@ double seam_wall_share(const Box& a, const Box& b, const Frame& f, const ClassGr
   const double a_len = across_x ? a.x1 - a.x0 : a.y1 - a.y0, b_len = across_x ? b.x1 - b.x0 : b.y1 - b.y0;
   if (overlap >= 0.5 * std::min(a_len, b_len)) return 0.0;  // one lies over the other: no seam
   int walled = 0, samples = 0;
-  for (double t = lo + 1.0; t <= hi - 1.0; t += 0.5) {
+  // The seam's ends lie in the walls the two units share at their sides (up to 0.3 m thick,
+  // half of it inside): they are not counted.
+  const double trim = std::max(1.0, kMergeSeamTrim * (hi - lo));
+  for (double t = lo + trim; t <= hi - trim; t += 0.5) {
     ++samples;
     bool wall = false;
     for (int k = -kMergeSeamReach; k <= kMergeSeamReach && !wall; ++k) {
@@ -57,15 +61,32 @@ std::vector<MergeCandidate> merge_candidates(const World& w, const ClassGrid& ob
       if (!(area > 0.0)) continue;
       const double fill = (a.width() * a.height() + b->width() * b->height() - inter) / area;
       if (fill < kMergeFill || seam_wall_share(a, *b, f, observed) > kMergeWallShare) continue;
-      const bool doors_fit = std::all_of(w.doors().begin(), w.doors().end(), [&](const Door& d) {
-        const bool in_a = d.unit_a == ua.id || d.unit_b == ua.id, in_b = d.unit_a == ub.id || d.unit_b == ub.id;
-        if (in_a == in_b) return true;  // joins the two (it goes), or neither
-        const Point2 mid{0.5 * (d.a.x + d.b.x), 0.5 * (d.a.y + d.b.y)};
-        return distance_to_boundary(u, f.to_local(mid)) <= kMergeDoorSnap;
-      });
-      if (doors_fit) out.push_back({ua.id, ub.id, rect_from_box(u, f), fill});
+      // Across the line they join along, the new rectangle spans both (the bounding one), their
+      // common part, or one unit's extent: units one or two cells apart in width otherwise
+      // leave a wall band off the wall. Side by side along x, the cross axis is y.
+      const bool along_x = std::max(a.x0, b->x0) - std::min(a.x1, b->x1) >= std::max(a.y0, b->y0) - std::min(a.y1, b->y1);
+      auto cross = [&](const Box& x) { return along_x ? std::pair{x.y0, x.y1} : std::pair{x.x0, x.x1}; };
+      const auto [a0, a1] = cross(a);
+      const auto [b0, b1] = cross(*b);
+      std::vector<std::pair<double, double>> spans{{std::min(a0, b0), std::max(a1, b1)}};
+      for (const auto& sp : {std::pair{std::max(a0, b0), std::min(a1, b1)}, std::pair{a0, a1}, std::pair{b0, b1}})
+        if (sp.second - sp.first > 0.0 &&
+            std::none_of(spans.begin(), spans.end(), [&](const auto& t) {
+              return std::abs(t.first - sp.first) < 1e-9 && std::abs(t.second - sp.second) < 1e-9;
+            }))
+          spans.push_back(sp);
+      for (const auto& [lo, hi] : spans) {
+        const Box v = along_x ? Box{u.x0, u.x1, lo, hi} : Box{lo, hi, u.y0, u.y1};
+        const bool doors_fit = std::all_of(w.doors().begin(), w.doors().end(), [&](const Door& d) {
+          const bool in_a = d.unit_a == ua.id || d.unit_b == ua.id, in_b = d.unit_a == ub.id || d.unit_b == ub.id;
+          if (in_a == in_b) return true;  // joins the two (it goes), or neither
+          const Point2 mid{0.5 * (d.a.x + d.b.x), 0.5 * (d.a.y + d.b.y)};
+          return distance_to_boundary(v, f.to_local(mid)) <= kMergeDoorSnap;
+        });
+        if (doors_fit) out.push_back({ua.id, ub.id, rect_from_box(v, f), fill});
+      }
     }
-  std::sort(out.begin(), out.end(), [](const MergeCandidate& x, const MergeCandidate& y) {
+  std::stable_sort(out.begin(), out.end(), [](const MergeCandidate& x, const MergeCandidate& y) {
     if (x.fill != y.fill) return x.fill > y.fill;
     return x.a != y.a ? x.a < y.a : x.b < y.b;
   });

@@ -23,17 +23,20 @@ inline constexpr double kMergeFill = 0.9;      // share of the bounding rectangl
 inline constexpr double kMergeDoorSnap = 2.0;  // a carried door this close to the new walls, cells
 inline constexpr double kMergeWallShare = 0.2;  // at most this share of the seam may be wall
 inline constexpr int kMergeSeamReach = 2;       // occupied cells this close across the seam count, cells
+inline constexpr double kMergeSeamTrim = 0.15;  // share of the seam left out at each end
 
 struct MergeCandidate {
   UnitId a = 0, b = 0;  // a < b
-  OrientedRect rect;    // the rectangle bounding both, in a's frame
+  OrientedRect rect;    // the new rectangle, in a's frame (merge_candidates: which ones)
   double fill = 0.0;    // share of `rect` that a or b covers
 };
 
-// The pairs of `w` whose bounding rectangle they fill to at least kMergeFill, whose seam (the
+// The pairs of `w` whose bounding rectangle they fill to at least kMergeFill and whose seam (the
 // line between them, where they neither overlap nor nest) is at most kMergeWallShare wall in
-// `observed`, and whose other doors (not the ones joining the two) lie on the rectangle's walls;
-// most filled first (ties by ids).
+// `observed`. Per pair up to four rectangles: along the line they join along, from the first's
+// end to the other's; across it, the span of both, their common span, or one unit's span (in
+// that order, repeats left out). A rectangle is a candidate when the pair's other doors (not the
+// ones joining the two) lie on its walls. Most filled pairs first (ties by ids).
 std::vector<MergeCandidate> merge_candidates(const World& w, const ClassGrid& observed);
 
 // The state `s` (IndoorModel::snapshot) with c.a and c.b replaced by one unit (a new id, c.a's
