@@ -8,39 +8,25 @@ namespace ksmc::stdlib::indoor::kit {
 AfterRunResult improve_after_run(IndoorModel& m) {
   AfterRunResult r;
   r.log_posterior_before = m.log_posterior();
-  double best = r.log_posterior_before;
-  // true when `candidate` scores higher (it stays the state), else the state is put back.
-  auto try_state = [&](const runtime::mcmc::Snapshot& current, const runtime::mcmc::Snapshot& candidate) {
-    m.restore(candidate);
-    const double lp = m.log_posterior();
-    if (lp > best) {
-      best = lp;
-      return true;
-    }
-    m.restore(current);
-    return false;
-  };
+  const MapEvidence& ev = *m.input().evidence;
   for (bool changed = true; changed;) {
     changed = false;
-    const runtime::mcmc::Snapshot current = m.snapshot();
     const World& w = m.scored().world();
-    const auto doorless = doorless_units(w);
-    const auto merges = merge_candidates(w, m.input().grid);
-    for (const UnitId id : doorless)
-      if (try_state(current, without_unit(current, id))) {
+    for (const UnitId id : doorless_units(w))
+      if (m.improve(removal(w, id))) {
         r.removed.push_back(id);
         changed = true;
         break;
       }
     if (changed) continue;
-    for (const MergeCandidate& c : merges)
-      if (try_state(current, with_merge(current, c))) {
+    for (const MergeCandidate& c : merge_candidates(w, m.input().grid))
+      if (m.improve(merge_move(w, ev, c))) {
         r.merged.emplace_back(c.a, c.b);
         changed = true;
         break;
       }
   }
-  r.log_posterior_after = best;
+  r.log_posterior_after = m.log_posterior();
   return r;
 }
 

@@ -7,9 +7,9 @@
 //  - merging two units that nearly tile a rectangle but not exactly, or that a door joins
 //    (MERGE needs an exact tiling and declines a door between the two): a corridor in pieces
 //    with a door between each two (merged_units.h).
-// Each candidate world is fully rescored (likelihood, weak prior and knowledge: the chain's
-// target, IndoorModel::restore). The first candidate with a higher log posterior is taken and
-// the search starts again, until none is higher. The result is the better state under the one
+// Each candidate is scored as a proposal is, incrementally, on the chain's target (likelihood,
+// weak prior and knowledge: IndoorModel::improve). The first candidate with a higher log
+// posterior is taken and the search starts again, until none is higher. The result is the better state under the one
 // target; a unit or a wall the map supports stays.
 #pragma once
 

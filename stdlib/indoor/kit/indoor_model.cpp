@@ -195,12 +195,19 @@ bool IndoorModel::propose(std::size_t kernel, mcmc::Rng& rng, double& log_q_fwd,
     }
     log_screened = fwd - bwd;
   }
+  stage(std::move(pend), std::move(p->move), k);
+  log_q_fwd = p->log_q_fwd;
+  log_q_bwd = p->log_q_bwd;
+  return true;
+}
+
+void IndoorModel::stage(Pending pend, Move move, KernelKind k) {
   if (sem_) {
     // The knowledge part of log p(W') on the proposed world: the units the move touched
     // (directly or through a door) are the constants whose evidence may have changed.
     std::vector<UnitId> changed;
-    for (const UnitChange& c : p->move.units) changed.push_back(c.id);
-    for (const DoorChange& c : p->move.doors)
+    for (const UnitChange& c : move.units) changed.push_back(c.id);
+    for (const DoorChange& c : move.doors)
       for (const auto& d : {c.before, c.after})
         if (d) changed.insert(changed.end(), {d->unit_a, d->unit_b});
     pend.old_semantics = std::move(current_);
@@ -212,7 +219,7 @@ bool IndoorModel::propose(std::size_t kernel, mcmc::Rng& rng, double& log_q_fwd,
     if (!relabels.empty() && pend.previewed) {
       // A type changed: the tables switch inside this proposal. Previewed as one move with the
       // kernel's when it fits, so that a rejection still costs no revert.
-      Move merged = p->move;
+      Move merged = move;
       for (UnitChange& c : relabels) {
         auto it = std::find_if(merged.units.begin(), merged.units.end(), [&](const UnitChange& m) { return m.id == c.id; });
         if (it == merged.units.end()) merged.units.push_back(std::move(c));
@@ -221,9 +228,9 @@ bool IndoorModel::propose(std::size_t kernel, mcmc::Rng& rng, double& log_q_fwd,
       relabels.clear();
       sw_.discard();
       pend.previewed = sw_.preview(merged);
-      if (pend.previewed) p->move = std::move(merged);
+      if (pend.previewed) move = std::move(merged);
       else {
-        sw_.apply(p->move);
+        sw_.apply(move);
         relabels = relabel(r);
       }
     }
@@ -237,11 +244,23 @@ bool IndoorModel::propose(std::size_t kernel, mcmc::Rng& rng, double& log_q_fwd,
     knowledge_ = r.log_knowledge();
     current_ = std::move(r);
   }
-  pend.move = std::move(p->move);
-  log_q_fwd = p->log_q_fwd;
-  log_q_bwd = p->log_q_bwd;
+  pend.move = std::move(move);
   pending_ = std::move(pend);
-  return true;
+}
+
+bool IndoorModel::improve(const Move& move) {
+  if (pending_) throw std::logic_error("IndoorModel: improve() during a proposal");
+  const double before = log_posterior();
+  Pending pend;
+  pend.previewed = sw_.preview(move);
+  if (!pend.previewed) sw_.apply(move);
+  stage(std::move(pend), move, move.kind);
+  if (log_posterior() > before) {
+    accept();
+    return true;
+  }
+  reject();
+  return false;
 }
 
 void IndoorModel::accept() {

@@ -68,6 +68,10 @@ class IndoorModel final : public runtime::mcmc::Model {
   // adapters). false: declined, untouched.
   // log_screened: the first stage's log ratio when the proposal passed it (else 0).
   bool propose(std::size_t kernel, runtime::mcmc::Rng& rng, double& log_q_fwd, double& log_q_bwd, double& log_screened);
+  // Applies `move` (valid on the current world) when the world after it has a higher log
+  // posterior, the knowledge part included (evaluated as a proposal is: incrementally); else
+  // leaves the state as it was. Not during a proposal. For the search after the run (after_run.h).
+  bool improve(const Move& move);
   // Proposals declined by the first stage of delayed acceptance so far.
   std::uint64_t screened_out() const { return screened_out_; }
 
@@ -85,6 +89,10 @@ class IndoorModel final : public runtime::mcmc::Model {
   // whose type changed (returns that move, applied) and sets the knowledge term.
   std::optional<Move> adopt(SemanticResult r, KernelKind kind);
   std::vector<UnitChange> relabel(const SemanticResult& r) const;
+  struct Pending;
+  // The knowledge part of a move already previewed or applied (pend.previewed says which):
+  // re-infers what the move touched, switches tables, and makes the move pending.
+  void stage(Pending pend, Move move, KernelKind k);
 
   std::shared_ptr<const SharedInput> in_;
   ScoredWorld sw_;

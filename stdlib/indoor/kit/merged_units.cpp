@@ -93,36 +93,25 @@ std::vector<MergeCandidate> merge_candidates(const World& w, const ClassGrid& ob
   return out;
 }
 
-runtime::mcmc::Snapshot with_merge(runtime::mcmc::Snapshot s, const MergeCandidate& c) {
-  using runtime::mcmc::Snapshot;
-  auto& units = s["units"];
-  UnitId next = 0;
-  int lut = 0;
-  for (const Snapshot& u : units) {
-    const auto id = u.at("id").get<UnitId>();
-    next = std::max(next, id);
-    if (id == c.a) lut = u.at("lut").get<int>();
+Move merge_move(const World& w, const MapEvidence& ev, const MergeCandidate& c) {
+  const Unit& ua = *w.find_unit(c.a);
+  const Unit& ub = *w.find_unit(c.b);
+  const UnitId id = w.next_unit_id();
+  Move m;
+  m.kind = KernelKind::Merge;
+  m.units = {{ua.id, ua, std::nullopt}, {ub.id, ub, std::nullopt}, {id, std::nullopt, ev.make_unit(id, c.rect, ua.lut_class)}};
+  auto in_pair = [&](UnitId u) { return u == c.a || u == c.b; };
+  for (const Door& d : w.doors()) {
+    const bool fa = in_pair(d.unit_a), fb = in_pair(d.unit_b);
+    if (!fa && !fb) continue;
+    if (fa && fb) {
+      m.doors.push_back({d.id, d, std::nullopt});
+      continue;
+    }
+    const UnitId other = fa ? d.unit_b : d.unit_a;
+    m.doors.push_back({d.id, d, ev.make_door(d.id, std::min(id, other), std::max(id, other), d.a, d.b)});
   }
-  ++next;
-  auto is_pair = [&](UnitId id) { return id == c.a || id == c.b; };
-  units.erase(std::remove_if(units.begin(), units.end(),
-                             [&](const Snapshot& u) { return is_pair(u.at("id").get<UnitId>()); }),
-              units.end());
-  units.push_back({{"id", next}, {"cx", c.rect.cx}, {"cy", c.rect.cy}, {"w", c.rect.w}, {"h", c.rect.h},
-                   {"theta", c.rect.theta}, {"lut", lut}});
-  auto& doors = s["doors"];
-  Snapshot kept = Snapshot::array();
-  for (Snapshot d : doors) {
-    UnitId a = d.at("a").get<UnitId>(), b = d.at("b").get<UnitId>();
-    if (is_pair(a) && is_pair(b)) continue;
-    if (is_pair(a)) a = next;
-    if (is_pair(b)) b = next;
-    d["a"] = std::min(a, b);
-    d["b"] = std::max(a, b);
-    kept.push_back(std::move(d));
-  }
-  doors = std::move(kept);
-  return s;
+  return m;
 }
 
 }  // namespace ksmc::stdlib::indoor::kit

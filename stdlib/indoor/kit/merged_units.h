@@ -12,8 +12,8 @@
 
 #include <vector>
 
-#include "runtime/mcmc/model.h"
 #include "stdlib/indoor/cell.h"
+#include "stdlib/indoor/map_evidence.h"
 #include "stdlib/indoor/world.h"
 
 namespace ksmc::stdlib::indoor::kit {
@@ -39,8 +39,8 @@ struct MergeCandidate {
 // ones joining the two) lie on its walls. Most filled pairs first (ties by ids).
 std::vector<MergeCandidate> merge_candidates(const World& w, const ClassGrid& observed);
 
-// The state `s` (IndoorModel::snapshot) with c.a and c.b replaced by one unit (a new id, c.a's
-// table) of rectangle c.rect: the doors joining them go, their other doors move to it.
-runtime::mcmc::Snapshot with_merge(runtime::mcmc::Snapshot s, const MergeCandidate& c);
+// The move that replaces c.a and c.b of `w` by one unit (the next id, c.a's table) of rectangle
+// c.rect: the doors joining them go, their other doors move to it.
+Move merge_move(const World& w, const MapEvidence& ev, const MergeCandidate& c);
 
 }  // namespace ksmc::stdlib::indoor::kit

@@ -18,12 +18,11 @@ std::vector<UnitId> doorless_units(const World& w) {
   return out;
 }
 
-runtime::mcmc::Snapshot without_unit(runtime::mcmc::Snapshot s, UnitId id) {
-  auto& units = s["units"];
-  units.erase(std::remove_if(units.begin(), units.end(),
-                             [id](const runtime::mcmc::Snapshot& u) { return u.at("id").get<UnitId>() == id; }),
-              units.end());
-  return s;
+Move removal(const World& w, UnitId id) {
+  Move m;
+  m.kind = KernelKind::Remove;
+  m.units.push_back({id, *w.find_unit(id), std::nullopt});
+  return m;
 }
 
 }  // namespace ksmc::stdlib::indoor::kit

@@ -6,7 +6,6 @@
 
 #include <vector>
 
-#include "runtime/mcmc/model.h"
 #include "stdlib/indoor/world.h"
 
 namespace ksmc::stdlib::indoor::kit {
@@ -14,7 +13,7 @@ namespace ksmc::stdlib::indoor::kit {
 // The units of `w` with no door, smallest first (ties by id).
 std::vector<UnitId> doorless_units(const World& w);
 
-// The state `s` (IndoorModel::snapshot) without the unit `id`.
-runtime::mcmc::Snapshot without_unit(runtime::mcmc::Snapshot s, UnitId id);
+// The move that removes unit `id` (a unit of `w` with no door).
+Move removal(const World& w, UnitId id);
 
 }  // namespace ksmc::stdlib::indoor::kit
