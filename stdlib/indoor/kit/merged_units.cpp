@@ -10,18 +10,22 @@ namespace ksmc::stdlib::indoor::kit {
 
 namespace {
 
+// Whether boxes a and b lie side by side along x (their seam is a line x = const) rather than
+// along y: the axis on which they are farther apart (or overlap less).
+bool side_by_side_along_x(const Box& a, const Box& b) {
+  return std::max(a.x0, b.x0) - std::min(a.x1, b.x1) >= std::max(a.y0, b.y0) - std::min(a.y1, b.y1);
+}
+
 // Share of the seam between boxes a and b (in frame f) that has an occupied cell within
 // kMergeSeamReach across it; 0 when the boxes nest (no seam).
 double seam_wall_share(const Box& a, const Box& b, const Frame& f, const ClassGrid& observed) {
-  const double gap_x = std::max(a.x0, b.x0) - std::min(a.x1, b.x1);  // < 0: overlap along x
-  const double gap_y = std::max(a.y0, b.y0) - std::min(a.y1, b.y1);
-  const bool across_x = gap_x >= gap_y;  // the seam is a line x = const
+  const bool across_x = side_by_side_along_x(a, b);
   // The seam's position and its extent along the other axis.
   const double at = across_x ? 0.5 * (std::max(a.x0, b.x0) + std::min(a.x1, b.x1))
                              : 0.5 * (std::max(a.y0, b.y0) + std::min(a.y1, b.y1));
   const double lo = across_x ? std::max(a.y0, b.y0) : std::max(a.x0, b.x0);
   const double hi = across_x ? std::min(a.y1, b.y1) : std::min(a.x1, b.x1);
-  const double overlap = across_x ? -gap_x : -gap_y;
+  const double overlap = across_x ? std::min(a.x1, b.x1) - std::max(a.x0, b.x0) : std::min(a.y1, b.y1) - std::max(a.y0, b.y0);
   const double a_len = across_x ? a.x1 - a.x0 : a.y1 - a.y0, b_len = across_x ? b.x1 - b.x0 : b.y1 - b.y0;
   if (overlap >= 0.5 * std::min(a_len, b_len)) return 0.0;  // one lies over the other: no seam
   int walled = 0, samples = 0;
@@ -64,7 +68,7 @@ std::vector<MergeCandidate> merge_candidates(const World& w, const ClassGrid& ob
       // Across the line they join along, the new rectangle spans both (the bounding one), their
       // common part, or one unit's extent: units one or two cells apart in width otherwise
       // leave a wall band off the wall. Side by side along x, the cross axis is y.
-      const bool along_x = std::max(a.x0, b->x0) - std::min(a.x1, b->x1) >= std::max(a.y0, b->y0) - std::min(a.y1, b->y1);
+      const bool along_x = side_by_side_along_x(a, *b);
       auto cross = [&](const Box& x) { return along_x ? std::pair{x.y0, x.y1} : std::pair{x.x0, x.x1}; };
       const auto [a0, a1] = cross(a);
       const auto [b0, b1] = cross(*b);
