@@ -43,16 +43,25 @@ double LikelihoodModel::log_likelihood(const Histogram& h) const {
   return s;
 }
 
-double cell_prediction_rate(const Histogram& h) {
-  std::int64_t total = 0, match = 0;
+CellConfusion cell_confusion(const Histogram& h) {
+  CellConfusion out{};
   for (int k = 0; k < kMaxLutClasses; ++k)
     for (int o = 0; o < 3; ++o)
-      for (int p = 0; p < 3; ++p) {
-        const auto n = h[static_cast<std::size_t>(k * 9 + o * 3 + p)];
-        total += n;
-        // Free=0/Free=0, Unknown=1/Unknown=1, Occupied=2/Wall=2.
-        if (o == p) match += n;
-      }
+      for (int p = 0; p < 3; ++p)
+        out[static_cast<std::size_t>(o)][static_cast<std::size_t>(p)] +=
+            h[static_cast<std::size_t>(histogram_index(k, static_cast<Cell>(o), static_cast<Predicted>(p)))];
+  return out;
+}
+
+double cell_prediction_rate(const Histogram& h) {
+  const CellConfusion m = cell_confusion(h);
+  std::int64_t total = 0, match = 0;
+  for (std::size_t o = 0; o < 3; ++o)
+    for (std::size_t p = 0; p < 3; ++p) {
+      total += m[o][p];
+      // Free=0/Free=0, Unknown=1/Unknown=1, Occupied=2/Wall=2.
+      if (o == p) match += m[o][p];
+    }
   return total > 0 ? static_cast<double>(match) / static_cast<double>(total) : 0.0;
 }
 

@@ -43,8 +43,13 @@ struct RasterParams {
   }
 };
 
+// Cells by observed class (row: Free/Unknown/Occupied) and predicted class (column:
+// Free/Unknown/Wall), summed over the likelihood classes of a histogram.
+using CellConfusion = std::array<std::array<std::int64_t, 3>, 3>;
+CellConfusion cell_confusion(const Histogram& h);
+
 // Cell prediction rate K(W,M) (eq. 3.39) from a histogram: share of cells with
-// observed Free/Unknown/Occupied predicted Free/Unknown/Wall.
+// observed Free/Unknown/Occupied predicted Free/Unknown/Wall (the confusion's diagonal).
 double cell_prediction_rate(const Histogram& h);
 
 // Full recomputation from scratch: paints every unit and door of `world` into fresh counts and

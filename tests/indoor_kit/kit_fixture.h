@@ -7,6 +7,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "runtime/cli/domain_spec.h"
+#include "runtime/mcmc/engine.h"
 #include "stdlib/indoor/cell.h"
 #include "stdlib/indoor/kit/kit.h"
 #include "tests/indoor_kit/binding.h"
@@ -46,5 +47,15 @@ inline runtime::cli::DomainInput input_for(const runtime::cli::DomainSpec& spec,
 }
 
 inline runtime::cli::DomainSpec spec() { return stdlib::indoor::kit::domain_spec(indoor_binding()); }
+
+// One chain of `iters` iterations of a loaded domain.
+inline runtime::mcmc::RunResult run_chain(const runtime::cli::DomainSetup& s, std::uint64_t iters, std::uint64_t seed) {
+  runtime::mcmc::Engine e(s.model_factory, s.kernels, s.schedule);
+  runtime::mcmc::EngineConfig cfg;
+  cfg.iterations = iters;
+  cfg.seed = seed;
+  cfg.chains = 1;
+  return e.run(cfg);
+}
 
 }  // namespace ksmc::tests::indoor_kit

@@ -4,7 +4,6 @@
 
 #include <iostream>
 
-#include "runtime/mcmc/engine.h"
 #include "stdlib/indoor/kit/indoor_model.h"
 #include "tests/indoor/synthetic_map.h"
 #include "tests/indoor_kit/kit_fixture.h"
@@ -24,15 +23,6 @@ std::filesystem::path plan_file() {
     return write_pgm(g, temp_dir("model") / "plan.pgm");
   }();
   return p;
-}
-
-mcmc::RunResult run(const ksmc::runtime::cli::DomainSetup& s, std::uint64_t iters, std::uint64_t seed) {
-  mcmc::Engine e(s.model_factory, s.kernels, s.schedule);
-  mcmc::EngineConfig cfg;
-  cfg.iterations = iters;
-  cfg.seed = seed;
-  cfg.chains = 1;
-  return e.run(cfg);
 }
 
 }  // namespace
@@ -91,7 +81,7 @@ TEST_CASE("indoor model: a rejected proposal restores the state exactly; one fix
 TEST_CASE("indoor model: the engine explains a synthetic plan, deterministically", "[indoor_kit]") {
   const auto sp = spec();
   const auto setup = sp.load(input_for(sp, plan_file(), 3, {{"resolution", "0.04"}}));
-  const auto r1 = run(setup, 6000, 3);
+  const auto r1 = run_chain(setup, 6000, 3);
   auto best = setup.model_factory(0);
   best->restore(r1.best().best_state);
   auto& m = static_cast<kit::IndoorModel&>(*best);
@@ -109,7 +99,7 @@ TEST_CASE("indoor model: the engine explains a synthetic plan, deterministically
   CHECK(k > 0.9);
   CHECK(rooms >= 3);
   CHECK(corridors >= 1);
-  const auto r2 = run(setup, 6000, 3);
+  const auto r2 = run_chain(setup, 6000, 3);
   CHECK(r2.best().best_state == r1.best().best_state);
   CHECK(r2.best().final_log_posterior == r1.best().final_log_posterior);
 }

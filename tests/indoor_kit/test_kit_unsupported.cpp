@@ -6,7 +6,6 @@
 
 #include <algorithm>
 
-#include "runtime/mcmc/engine.h"
 #include "stdlib/indoor/kit/after_run.h"
 #include "stdlib/indoor/kit/merged_units.h"
 #include "stdlib/indoor/kit/unsupported_units.h"
@@ -35,12 +34,7 @@ std::filesystem::path three_rooms() {
 TEST_CASE("indoor kit: door-less units the map does not support are removed after the run", "[indoor_kit]") {
   const auto sp = spec();
   const auto setup = sp.load(input_for(sp, three_rooms(), 3, {{"resolution", "0.05"}}));
-  mcmc::Engine e(setup.model_factory, setup.kernels, setup.schedule);
-  mcmc::EngineConfig cfg;
-  cfg.iterations = 6000;
-  cfg.seed = 3;
-  cfg.chains = 1;
-  const auto run = e.run(cfg);
+  const auto run = run_chain(setup, 6000, 3);
   auto model = setup.model_factory(0);
   auto& m = static_cast<kit::IndoorModel&>(*model);
 

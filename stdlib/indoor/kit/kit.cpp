@@ -111,16 +111,12 @@ io::WorldResult make_result(IndoorModel& m, const io::OccupancyMap& map, const s
   r.metrics["cell_prediction_rate"] = m.scored().cell_prediction_rate();
   // Where K's misses are: cells by observed class and predicted class (the diagonal is K's
   // numerator), e.g. cells_occupied_predicted_free = furniture and clutter inside units.
-  const Histogram h = m.scored().histogram();
+  const CellConfusion confusion = cell_confusion(m.scored().histogram());
   const char* observed[] = {"free", "unknown", "occupied"};
   const char* predicted[] = {"free", "unknown", "wall"};
-  for (int o = 0; o < 3; ++o)
-    for (int p = 0; p < 3; ++p) {
-      std::int64_t n = 0;
-      for (int k = 0; k < kMaxLutClasses; ++k)
-        n += h[static_cast<std::size_t>(histogram_index(k, static_cast<Cell>(o), static_cast<Predicted>(p)))];
-      r.metrics[std::string("cells_") + observed[o] + "_predicted_" + predicted[p]] = static_cast<double>(n);
-    }
+  for (std::size_t o = 0; o < 3; ++o)
+    for (std::size_t p = 0; p < 3; ++p)
+      r.metrics[std::string("cells_") + observed[o] + "_predicted_" + predicted[p]] = static_cast<double>(confusion[o][p]);
   r.metrics["iterations"] = static_cast<double>(run.iterations);
   r.metrics["seconds"] = secs;
   r.metrics["iterations_per_second"] = secs > 0.0 ? static_cast<double>(run.iterations) / secs : 0.0;
