@@ -1,6 +1,6 @@
 // Door-less units the map does not support are removed after the run (stdlib/indoor/kit/
 // unsupported_units.h): a strip planted inside a room goes, the result is a local optimum of
-// the chain's own target (no further removal raises it), units with doors stay, and the step
+// the chain's own target (no further removal, merge or split raises it), units with doors stay, and the step
 // is deterministic.
 #include <catch2/catch.hpp>
 
@@ -8,6 +8,7 @@
 
 #include "stdlib/indoor/kit/after_run.h"
 #include "stdlib/indoor/kit/merged_units.h"
+#include "stdlib/indoor/kit/split_units.h"
 #include "stdlib/indoor/kit/unsupported_units.h"
 #include "tests/indoor/synthetic_map.h"
 #include "tests/indoor_kit/kit_fixture.h"
@@ -63,6 +64,9 @@ TEST_CASE("indoor kit: door-less units the map does not support are removed afte
   for (const UnitId id : kit::doorless_units(w)) CHECK_FALSE(m.improve(kit::removal(w, id)));
   for (const kit::MergeCandidate& c : kit::merge_candidates(w, m.input().grid))
     CHECK_FALSE(m.improve(kit::merge_move(w, *m.input().evidence, c)));
+  for (const kit::SplitCandidate& c : kit::split_candidates(w, m.input().grid, 12.0, 40.0))
+    for (const bool with_door : {true, false})
+      if (const auto move = kit::split_move(w, *m.input().evidence, c, with_door)) CHECK_FALSE(m.improve(*move));
   CHECK(m.snapshot() == kept);
   CHECK(m.log_posterior() == r.log_posterior_after);
 
@@ -73,6 +77,7 @@ TEST_CASE("indoor kit: door-less units the map does not support are removed afte
   const kit::AfterRunResult r2 = kit::improve_after_run(m2);
   CHECK(r2.removed == r.removed);
   CHECK(r2.merged == r.merged);
+  CHECK(r2.split == r.split);
   CHECK(m2.snapshot() == kept);
 }
 

@@ -6,7 +6,10 @@
 //    (unsupported_units.h);
 //  - merging two units that nearly tile a rectangle but not exactly, or that a door joins
 //    (MERGE needs an exact tiling and declines a door between the two): a corridor in pieces
-//    with a door between each two (merged_units.h).
+//    with a door between each two (merged_units.h);
+//  - splitting a unit along a wall that runs through it, with a door in the wall's opening or
+//    without: a hall over several rooms whose walls the chain's split lines miss
+//    (split_units.h).
 // Each candidate is scored as a proposal is, incrementally, on the chain's target (likelihood,
 // weak prior and knowledge: IndoorModel::improve). The first candidate with a higher log
 // posterior is taken and the search starts again, until none is higher. The result is the better state under the one
@@ -22,6 +25,7 @@ namespace ksmc::stdlib::indoor::kit {
 struct AfterRunResult {
   std::vector<UnitId> removed;                      // in order
   std::vector<std::pair<UnitId, UnitId>> merged;    // in order
+  std::vector<UnitId> split;                        // in order
   double log_posterior_before = 0.0;
   double log_posterior_after = 0.0;
 };

@@ -305,6 +305,7 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
     result.posterior = std::move(posterior);
     result.metrics["units_removed_after_run"] = static_cast<double>(after.removed.size());
     result.metrics["units_merged_after_run"] = static_cast<double>(after.merged.size());
+    result.metrics["units_split_after_run"] = static_cast<double>(after.split.size());
     result.metrics["after_run_seconds"] = search_seconds;
     result.metrics["chain_best_log_posterior"] = after.log_posterior_before;
     nlohmann::ordered_json path_json;

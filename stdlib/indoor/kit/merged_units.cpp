@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "stdlib/indoor/geometry.h"
+#include "stdlib/indoor/kit/wall_lines.h"
 
 namespace ksmc::stdlib::indoor::kit {
 
@@ -28,22 +29,10 @@ double seam_wall_share(const Box& a, const Box& b, const Frame& f, const ClassGr
   const double overlap = across_x ? std::min(a.x1, b.x1) - std::max(a.x0, b.x0) : std::min(a.y1, b.y1) - std::max(a.y0, b.y0);
   const double a_len = across_x ? a.x1 - a.x0 : a.y1 - a.y0, b_len = across_x ? b.x1 - b.x0 : b.y1 - b.y0;
   if (overlap >= 0.5 * std::min(a_len, b_len)) return 0.0;  // one lies over the other: no seam
-  int walled = 0, samples = 0;
   // The seam's ends lie in the walls the two units share at their sides (up to 0.3 m thick,
   // half of it inside): they are not counted.
   const double trim = std::max(1.0, kMergeSeamTrim * (hi - lo));
-  for (double t = lo + trim; t <= hi - trim; t += 0.5) {
-    ++samples;
-    bool wall = false;
-    for (int k = -kMergeSeamReach; k <= kMergeSeamReach && !wall; ++k) {
-      const Point2 p = f.to_global(across_x ? Point2{at + k, t} : Point2{t, at + k});
-      const int r = static_cast<int>(std::floor(p.y)), c = static_cast<int>(std::floor(p.x));
-      wall = r >= 0 && c >= 0 && r < observed.rows && c < observed.cols &&
-             observed(r, c) == static_cast<std::uint8_t>(Cell::Occupied);
-    }
-    walled += wall ? 1 : 0;
-  }
-  return samples > 0 ? static_cast<double>(walled) / samples : 1.0;
+  return wall_share(wall_samples(observed, FrameLine{&f, across_x, at, lo + trim, hi - trim}, kMergeSeamReach));
 }
 
 }  // namespace
