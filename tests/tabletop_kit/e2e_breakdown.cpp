@@ -17,6 +17,7 @@
 #include <fmt/format.h>
 
 #include "stdlib/tabletop/keypoint_fit.h"
+#include "stdlib/tabletop/pair_geometry.h"
 #include "stdlib/tabletop/scene_io.h"
 #include "tools/tabletop_sim/generator.h"
 #include "tools/tabletop_sim/scene_writer.h"
@@ -45,7 +46,12 @@ std::string describe(const tt::Evidence& ev, std::size_t b) {
         con += fmt::format("{{min_z {:.1f} mm, top of {} {:.1f} mm}}", 1e3 * ev.boxes[b].min_z(), ev.ids[o],
                            1e3 * ev.boxes[o].max_z());
     }
-    if (ev.intersect[b][o]) inter += " " + ev.ids[o] + (ev.stable[o] ? "(st)" : "");
+    if (ev.intersect[b][o]) {
+      const tt::PairGeometry g = tt::pair_geometry(ev.boxes[b], ev.boxes[o]);
+      inter += " " + ev.ids[o] + (ev.stable[o] ? "(st)" : "") +
+               fmt::format("{{depth {:.1f} mm, dir_z {:.2f}{}}}", 1e3 * g.depth, std::abs(g.direction.z()),
+                           g.stacked ? ", stacked" : "");
+    }
   }
   s += " on[" + sup_by + " ] carries[" + sups + " ] touch[" + con + " ] cut[" + inter + " ]";
   return s;
