@@ -132,10 +132,6 @@ struct SplitLines {  // Hough split lines of a unit (split / merge)
   double angle_tol = 0.0;  // radians
   bool operator==(const SplitLines&) const = default;
 };
-struct Partitions {  // partition cuts of a unit (split / merge)
-  double max_opening = 2.0;  // m
-  bool operator==(const Partitions&) const = default;
-};
 struct Doors {  // door candidates on connecting walls (allocate / deallocate)
   double min_width = 0.6, max_width = 2.0;  // m
   bool operator==(const Doors&) const = default;
@@ -155,7 +151,7 @@ struct Interchange {  // shared-wall shift or junction swap of two units (interc
   bool operator==(const Interchange&) const = default;
 };
 }  // namespace move
-using Source = std::variant<detect::Wbu, detect::Fsu, detect::Rpb, detect::SplitLines, detect::Partitions, detect::Doors,
+using Source = std::variant<detect::Wbu, detect::Fsu, detect::Rpb, detect::SplitLines, detect::Doors,
                             partner::InverseDistance, move::WallShift, move::Interchange>;
 
 namespace detect {
@@ -163,7 +159,6 @@ Source wbu(double min_size, int max_units);
 Source fsu(std::int64_t after, int min_area_cells);
 Source rpb(double min_size);
 Source split_lines(int min_votes, double angle_tol);
-Source partitions(double max_opening);
 Source doors(double min_width, double max_width);
 }  // namespace detect
 namespace partner {

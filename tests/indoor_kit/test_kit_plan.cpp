@@ -32,13 +32,10 @@ TEST_CASE("the binding of indoor.ksm gives the kit's plan", "[indoor_kit]") {
   CHECK(add.fsu[0].after == 4000);
   CHECK(add.rpb.size() == 1);
   CHECK(add.split.empty());
-  CHECK(add.partitions.empty());
   CHECK(add.doors.empty());
   const SourcePool& split = p.pools[p.kernels[2].pool];
   REQUIRE(split.split.size() == 1);
   CHECK(split.split[0].min_votes == 20);
-  REQUIRE(split.partitions.size() == 1);  // pooled with the split lines
-  CHECK(split.partitions[0].max_opening == 2.0);
   CHECK(split.wbu.empty());
   CHECK(p.pools[p.kernels[4].pool].wall_shift.at(0).sigma == 2.0);
   CHECK(p.pools[p.kernels[6].pool].doors.at(0).max_width == 2.0);

@@ -114,7 +114,6 @@ Source detect::wbu(double min_size, int max_units) { return Wbu{min_size, max_un
 Source detect::fsu(std::int64_t after, int min_area_cells) { return Fsu{after, min_area_cells}; }
 Source detect::rpb(double min_size) { return Rpb{min_size}; }
 Source detect::split_lines(int min_votes, double angle_tol) { return SplitLines{min_votes, angle_tol}; }
-Source detect::partitions(double max_opening) { return Partitions{max_opening}; }
 Source detect::doors(double min_width, double max_width) { return Doors{min_width, max_width}; }
 Source partner::inverse_distance() { return InverseDistance{}; }
 Source move::wall_shift(double sigma) { return WallShift{sigma}; }

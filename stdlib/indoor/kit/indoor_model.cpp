@@ -9,9 +9,7 @@
 #include "stdlib/indoor/detect/door.h"
 #include "stdlib/indoor/detect/fsu.h"
 #include "stdlib/indoor/detect/split.h"
-#include "stdlib/indoor/geometry.h"
 #include "stdlib/indoor/kit/door_cache.h"
-#include "stdlib/indoor/kit/split_units.h"
 
 namespace ksmc::stdlib::indoor::kit {
 
@@ -43,7 +41,7 @@ detect::DoorParams door_params(const blocks::detect::Doors& d, double resolution
 
 std::vector<CandidateLine> split_lines_of(const SharedInput& in, const SourcePool& cfg, const Unit& u) {
   std::vector<CandidateLine> lines;
-  if (u.rect.w < 2.0 || u.rect.h < 2.0 || (cfg.split.empty() && cfg.partitions.empty())) return lines;
+  if (u.rect.w < 2.0 || u.rect.h < 2.0) return lines;
   for (const auto& s : cfg.split) {
     detect::SplitParams sp;
     sp.hough.threshold = s.min_votes;
@@ -51,11 +49,6 @@ std::vector<CandidateLine> split_lines_of(const SharedInput& in, const SourcePoo
     const auto found = to_line_candidates(detect::detect_split_lines(in.grid, u.rect, sp, detect::GridCheck::Trusted));  // checked by sw_
     lines.insert(lines.end(), found.begin(), found.end());
   }
-  // Partition cuts, weighted by their wall length: a cut is a line across the unit, so SPLIT
-  // cuts exactly there (kernels_split_merge.cpp, cut_of).
-  for (const auto& pt : cfg.partitions)
-    for (const SplitCandidate& c : split_candidates(u, in.grid, 0.0, pt.max_opening / in.resolution))
-      lines.push_back({c.cut_a, c.cut_b, c.share * distance(c.cut_a, c.cut_b)});
   return lines;
 }
 

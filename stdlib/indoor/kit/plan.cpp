@@ -75,7 +75,6 @@ SourcePool pool_of(const std::vector<blk::Source>& sources) {
                           [&](const blk::detect::Fsu& x) { p.fsu.push_back(x); },
                           [&](const blk::detect::Rpb& x) { p.rpb.push_back(x); },
                           [&](const blk::detect::SplitLines& x) { p.split.push_back(x); },
-                          [&](const blk::detect::Partitions& x) { p.partitions.push_back(x); },
                           [&](const blk::detect::Doors& x) { p.doors.push_back(x); },
                           [&](const blk::move::WallShift& x) { p.wall_shift.push_back(x); },
                           [](const blk::partner::InverseDistance&) {},  // the kernels' partner choice

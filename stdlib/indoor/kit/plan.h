@@ -21,7 +21,6 @@ struct SourcePool {
   std::vector<blocks::detect::Fsu> fsu;
   std::vector<blocks::detect::Rpb> rpb;
   std::vector<blocks::detect::SplitLines> split;  // lines pooled
-  std::vector<blocks::detect::Partitions> partitions;  // their cuts pooled with the split lines
   std::vector<blocks::detect::Doors> doors;       // candidates pooled
   std::vector<blocks::move::WallShift> wall_shift;  // the first one's sigma
   std::vector<blocks::Source> declared;  // as declared (pools with equal sources are shared)

@@ -93,8 +93,6 @@ std::vector<SplitCandidate> split_candidates(const Unit& u, const ClassGrid& obs
         const Box q = across_x ? Box{at[i], b.x1, b.y0, b.y1} : Box{b.x0, b.x1, at[i], b.y1};
         c.first = rect_from_box(p, f);
         c.second = rect_from_box(q, f);
-        c.cut_a = f.to_global(across_x ? Point2{at[i], b.y0} : Point2{b.x0, at[i]});
-        c.cut_b = f.to_global(across_x ? Point2{at[i], b.y1} : Point2{b.x1, at[i]});
         if (const auto o = longest_opening(samples[i], lo); o && o->second - o->first >= min_door &&
                                                              o->second - o->first <= max_door) {
           const FrameLine line{&f, across_x, at[i], lo, hi};

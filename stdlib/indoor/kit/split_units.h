@@ -31,7 +31,6 @@ inline constexpr double kSplitThinShare = 0.15; // share of the cut that is thin
 struct SplitCandidate {
   UnitId unit = 0;
   OrientedRect first, second;  // the two parts
-  Point2 cut_a, cut_b;         // the cut, from one of the unit's walls to the opposite one
   double share = 0.0;          // share of the cut that is wall
   std::optional<std::pair<Point2, Point2>> door;  // the opening on the cut, when door-wide
 };
