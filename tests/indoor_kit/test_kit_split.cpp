@@ -8,6 +8,7 @@
 
 #include "stdlib/indoor/kit/after_run.h"
 #include "stdlib/indoor/kit/split_units.h"
+#include "stdlib/indoor/kit/wall_lines.h"
 #include "tests/indoor/synthetic_map.h"
 #include "tests/indoor_kit/kit_fixture.h"
 
@@ -110,4 +111,33 @@ TEST_CASE("indoor kit: a room is not split beside a block of furniture, nor wher
   CHECK(found[0].first.cx + 0.5 * found[0].first.w == Approx(131.0).margin(1.0));
   REQUIRE(found[0].door.has_value());
   CHECK(std::min(found[0].door->first.y, found[0].door->second.y) == Approx(74.0).margin(1.5));
+}
+
+TEST_CASE("indoor kit: bounded wall sampling stops only where the full sampling would reject the line", "[indoor_kit]") {
+  const ClassGrid g = draw_plan(110, 180, {{10, 10, 90, 70}, {90, 10, 170, 70}, {10, 70, 170, 100}}, 2,
+                                {{50, 70}, {130, 70}, {90, 40}}, 16);
+  int stopped = 0, kept = 0;
+  for (const double theta : {0.0, 0.3, 1.2})
+    for (double at = 5.0; at < 170.0; at += 3.7)
+      for (const bool across_x : {true, false}) {
+        const Frame f(theta);
+        const kit::FrameLine line{&f, across_x, at, -20.0, 120.0};
+        const auto full = kit::wall_samples(g, line, 1);
+        REQUIRE(full.size() == kit::sample_count(line));
+        std::size_t longest = 0, run = 0, missing = 0;
+        for (const bool x : full) {
+          run = x ? 0 : run + 1;
+          longest = std::max(longest, run);
+          missing += x ? 0 : 1;
+        }
+        for (const auto& [max_open, max_missing] :
+             {std::pair<std::size_t, std::size_t>{30, full.size() / 2}, {300, full.size()}}) {
+          const auto bounded = kit::wall_samples_bounded(g, line, 1, 0, max_open, max_missing);
+          CHECK(bounded.has_value() == (longest <= max_open && missing <= max_missing));
+          if (bounded) CHECK(*bounded == full);
+          (bounded ? kept : stopped) += 1;
+        }
+      }
+  CHECK(stopped > 0);
+  CHECK(kept > 0);
 }

@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <tuple>
+#include <optional>
+#include <utility>
 
 #include "stdlib/indoor/geometry.h"
 #include "stdlib/indoor/kit/merged_units.h"
@@ -49,57 +50,62 @@ bool partition(const std::vector<bool>& any, const std::vector<bool>& thin, doub
 std::vector<SplitCandidate> split_candidates(const Unit& u, const ClassGrid& observed, double min_door,
                                              double max_door) {
   std::vector<SplitCandidate> out;
-  {
-    const Frame f(u.rect.theta);
-    const Box b = own_box(u.rect);
-    for (const bool across_x : {true, false}) {  // across_x: the cut is a line x = at
-      const double a0 = across_x ? b.x0 : b.y0, a1 = across_x ? b.x1 : b.y1;
-      const double lo = (across_x ? b.y0 : b.x0) + kSplitEndMargin, hi = (across_x ? b.y1 : b.x1) - kSplitEndMargin;
-      if (hi - lo < 1.0) continue;
-      // Per position: the share of the cut with a wall within kSplitReach when it is a partition,
-      // and the share of the two cells the parts' wall bands would predict there that are
-      // occupied (is the cut on it? the position is the peak of this one). Both are read only
-      // where the first could reach kSplitWallShare.
-      std::vector<double> at, share;
-      std::vector<std::vector<bool>> samples;
-      for (double t = a0 + kSplitMinPart; t <= a1 - kSplitMinPart; t += 0.5) {
-        const FrameLine line{&f, across_x, t, lo, hi};
-        at.push_back(t);
-        samples.push_back(wall_samples(observed, line, kSplitReach));
-        const double any = wall_share(samples.back());
-        share.push_back(any >= kSplitWallShare &&
-                                partition(samples.back(), wall_samples(observed, line, kSplitReach, kSplitThinWall), max_door)
-                            ? any
-                            : 0.0);
+  const Frame f(u.rect.theta);
+  const Box b = own_box(u.rect);
+  for (const bool across_x : {true, false}) {  // across_x: the cut is a line x = at
+    const double a0 = across_x ? b.x0 : b.y0, a1 = across_x ? b.x1 : b.y1;
+    const double lo = (across_x ? b.y0 : b.x0) + kSplitEndMargin, hi = (across_x ? b.y1 : b.x1) - kSplitEndMargin;
+    if (hi - lo < 1.0) continue;
+    // Per position: the share of the cut with a wall within kSplitReach when it is a partition,
+    // and the share of the two cells the parts' wall bands would predict there that are
+    // occupied (is the cut on it? the position is the peak of this one). Both are read only
+    // where the first could reach kSplitWallShare.
+    std::vector<double> at, share;
+    std::vector<std::vector<bool>> samples;
+    // Most lines cross open floor: their sampling stops at the first opening wider than max_door
+    // or once more than half the line is not wall (either rejects the line). Every position
+    // has as many samples.
+    const std::size_t n = sample_count(FrameLine{&f, across_x, 0.0, lo, hi});
+    const auto max_open = static_cast<std::size_t>(std::max(0.0, 2.0 * max_door));
+    const auto max_missing = static_cast<std::size_t>(std::floor((1.0 - kSplitWallShare) * static_cast<double>(n)));
+    for (double t = a0 + kSplitMinPart; t <= a1 - kSplitMinPart; t += 0.5) {
+      const FrameLine line{&f, across_x, t, lo, hi};
+      at.push_back(t);
+      auto s = wall_samples_bounded(observed, line, kSplitReach, 0, max_open, max_missing);
+      const double any = s ? wall_share(*s) : 0.0;
+      share.push_back(s && any >= kSplitWallShare &&
+                              partition(*s, wall_samples(observed, line, kSplitReach, kSplitThinWall), max_door)
+                          ? any
+                          : 0.0);
+      samples.push_back(s ? std::move(*s) : std::vector<bool>{});
+    }
+    std::vector<double> hit(at.size(), -1.0);
+    auto hit_at = [&](std::size_t i) {
+      if (hit[i] < 0.0)
+        hit[i] = 0.5 * (wall_share(wall_samples(observed, FrameLine{&f, across_x, at[i] - 0.5, lo, hi}, 0)) +
+                        wall_share(wall_samples(observed, FrameLine{&f, across_x, at[i] + 0.5, lo, hi}, 0)));
+      return hit[i];
+    };
+    for (std::size_t i = 0; i < at.size(); ++i) {
+      if (share[i] < kSplitWallShare) continue;
+      // A local maximum of `hit` over +-3 cells (the first of equal ones).
+      bool peak = true;
+      for (std::size_t j = i >= 6 ? i - 6 : 0; j < std::min(at.size(), i + 7) && peak; ++j)
+        peak = !(hit_at(j) > hit_at(i) || (hit_at(j) == hit_at(i) && j < i));
+      if (!peak) continue;
+      SplitCandidate c;
+      c.unit = u.id;
+      c.share = share[i];
+      const Box p = across_x ? Box{b.x0, at[i], b.y0, b.y1} : Box{b.x0, b.x1, b.y0, at[i]};
+      const Box q = across_x ? Box{at[i], b.x1, b.y0, b.y1} : Box{b.x0, b.x1, at[i], b.y1};
+      c.first = rect_from_box(p, f);
+      c.second = rect_from_box(q, f);
+      if (const auto o = longest_opening(samples[i], lo); o && o->second - o->first >= min_door &&
+                                                           o->second - o->first <= max_door) {
+        const FrameLine line{&f, across_x, at[i], lo, hi};
+        c.door = std::pair{line.point(o->first), line.point(o->second)};
       }
-      std::vector<double> hit(at.size(), -1.0);
-      auto hit_at = [&](std::size_t i) {
-        if (hit[i] < 0.0)
-          hit[i] = 0.5 * (wall_share(wall_samples(observed, FrameLine{&f, across_x, at[i] - 0.5, lo, hi}, 0)) +
-                          wall_share(wall_samples(observed, FrameLine{&f, across_x, at[i] + 0.5, lo, hi}, 0)));
-        return hit[i];
-      };
-      for (std::size_t i = 0; i < at.size(); ++i) {
-        if (share[i] < kSplitWallShare) continue;
-        // A local maximum of `hit` over +-3 cells (the first of equal ones).
-        bool peak = true;
-        for (std::size_t j = i >= 6 ? i - 6 : 0; j < std::min(at.size(), i + 7) && peak; ++j)
-          peak = !(hit_at(j) > hit_at(i) || (hit_at(j) == hit_at(i) && j < i));
-        if (!peak) continue;
-        SplitCandidate c;
-        c.unit = u.id;
-        c.share = share[i];
-        const Box p = across_x ? Box{b.x0, at[i], b.y0, b.y1} : Box{b.x0, b.x1, b.y0, at[i]};
-        const Box q = across_x ? Box{at[i], b.x1, b.y0, b.y1} : Box{b.x0, b.x1, at[i], b.y1};
-        c.first = rect_from_box(p, f);
-        c.second = rect_from_box(q, f);
-        if (const auto o = longest_opening(samples[i], lo); o && o->second - o->first >= min_door &&
-                                                             o->second - o->first <= max_door) {
-          const FrameLine line{&f, across_x, at[i], lo, hi};
-          c.door = std::pair{line.point(o->first), line.point(o->second)};
-        }
-        out.push_back(c);
-      }
+      out.push_back(c);
     }
   }
   return out;
