@@ -5,14 +5,17 @@
 // inside it cost (measured: lab_ipa, seed 4, one 22 x 11 m hall over four spaces, 30,000 nats
 // below the chain of seed 6).
 //
-// A cut is a line across the unit, parallel to two of its walls, along which the observed grid
-// is wall for at least kSplitWallShare of its length and reads as a partition (thin wall for
-// kSplitThinShare of it, where furniture is a thick block; openings at most door-wide): a local maximum of that share over the
-// positions at least kSplitMinPart from the unit's walls. Each cut is tried as it is and, when
-// its longest opening is as wide as a door (the domain's door widths), with a door there.
+// A cut is a line across the unit, parallel to two of its walls and at least kSplitMinPart
+// from them, along which the observed grid is wall for at least kSplitWallShare of its length
+// and reads as a partition (thin wall for kSplitThinShare of it, where furniture is a thick
+// block; no opening wider than the widest door the domain declares, none at all without
+// doors). Of the neighbouring lines within 3 cells it is the one where the parts' wall bands
+// would lie on the most occupied cells. Each cut is tried as it is and, when its longest
+// opening is as wide as a door, with a door there.
 #pragma once
 
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "stdlib/indoor/cell.h"
