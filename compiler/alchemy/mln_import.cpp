@@ -278,10 +278,26 @@ class Translator {
     pred_order_.push_back(name.text);
   }
 
+  // An Alchemy weight as the ksm grammar writes a number ('-'? digits ('.' digits)? exponent?):
+  // "+2" -> "2", ".07" -> "0.07", "-.5" -> "-0.5"; anything else (two points: "1.2.3") is an error
+  // here rather than a .ksm the front end refuses.
+  std::string ksm_number(const Token& t) const {
+    std::string x = t.text;
+    std::string sign;
+    if (!x.empty() && (x[0] == '+' || x[0] == '-')) {
+      if (x[0] == '-') sign = "-";
+      x.erase(0, 1);
+    }
+    if (!x.empty() && x[0] == '.') x.insert(0, "0");
+    const auto mantissa = x.substr(0, x.find_first_of("eE"));
+    if (std::count(mantissa.begin(), mantissa.end(), '.') > 1) fail(t, "weight '" + t.text + "' is not a number");
+    return sign + x;
+  }
+
   void formula_statement() {
     const Token start = peek();
     std::string weight;
-    if (peek().kind == Token::Number) weight = next().text;
+    if (peek().kind == Token::Number) weight = ksm_number(next());
     auto f = iff();
     bool hard = false;
     if (sym(".")) {
