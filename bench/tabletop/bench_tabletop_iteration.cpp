@@ -1,9 +1,10 @@
-// bench_tabletop_iteration: time per DDMCMC iteration of the table-top kit (refine move:
-// n = 20 candidates, incremental evidence, MLN lookup / re-run, MH accept/reject) on
+// bench_tabletop_iteration: time per DDMCMC iteration of the table-top kit (the kernels and
+// schedule of domains/tabletop.ksm: refine with n = 20 candidates and the pose.fit mixture,
+// incremental evidence, MLN lookup / re-run, MH accept/reject) on
 // physics-generated scenes of 5, 10 and 20 boxes, and the share of it spent in Markov
 // logic (evidence hashing, cache lookups, grounding + inference of new evidence).
 // Each run starts from a fresh model (cold MLN cache). Median of 7 runs. "kept" is the share
-// of iterations in which the current pose had the best weight (the move keeps the state);
+// of iterations whose move declined (refine: the current pose had the best weight);
 // "us/MLN run" is one uncached evaluation of the scene's input (full extraction,
 // grounding, exact marginals and log Z, exact MAP), median of 7 fresh models: the cost an
 // iteration pays on top when its evidence is new.
@@ -22,7 +23,7 @@
 #include <nlohmann/json.hpp>
 
 #include "runtime/mcmc/rng.h"
-#include "stdlib/tabletop/kit/refine_kernel.h"
+#include "stdlib/tabletop/kit/domain_spec.h"
 #include "stdlib/tabletop/kit/tabletop_model.h"
 #include "stdlib/tabletop/scene_io.h"
 #include "tools/tabletop_sim/generator.h"
@@ -59,20 +60,23 @@ double cold_mln_us(const std::shared_ptr<const tt::Scene>& scene) {
 RunStats run_once(const std::shared_ptr<const tt::Scene>& scene, long iterations, std::uint64_t seed) {
   const auto& binding = ksmc::tests::tabletop_kit::ksm_binding();
   kit::TabletopModel model(scene, binding);
-  const kit::RefineKernel kernel(binding.kernels.at(0), true);
+  const kit::KitSetup setup = kit::make_setup(binding, scene);
+  const rm::Schedule& schedule = setup.setup.schedule;
   rm::Rng rng(seed);
   const auto before = model.semantics().core().stats();
   long accepted = 0, kept = 0;
   const auto t0 = std::chrono::steady_clock::now();
   double lp = model.log_posterior();
   for (long it = 0; it < iterations; ++it) {
-    const rm::Proposal p = static_cast<const rm::Kernel&>(kernel).propose(model, rng);
+    const std::size_t row = schedule.row_index(static_cast<std::uint64_t>(it));
+    const std::size_t k = schedule.pick(row, rng);
+    const rm::Proposal p = setup.setup.kernels.at(k)->propose(model, rng);
     if (p.was_declined()) {
       ++kept;
       continue;
     }
     const double lp_new = model.log_posterior();
-    const double log_a = lp_new - lp + p.log_q_bwd - p.log_q_fwd;
+    const double log_a = lp_new - lp + p.log_q_bwd - p.log_q_fwd + schedule.log_selection_ratio(row, k);
     if (std::log(rng.uniform_pos()) < log_a) {
       model.accept();
       lp = lp_new;
@@ -109,7 +113,7 @@ int main(int argc, char** argv) {
     }
   }
   constexpr int kRuns = 7;
-  std::cout << fmt::format("table-top kit, domains/tabletop.ksm parameters, {} iterations per run, median of {} runs\n",
+  std::cout << fmt::format("table-top kit, domains/tabletop.ksm kernels and schedule, {} iterations per run, median of {} runs\n",
                            iterations, kRuns);
   std::cout << "| boxes | objects | us/iteration | MLN share | MLN runs /1k it | acceptance | kept | us/MLN run |\n"
                "|------:|--------:|-------------:|----------:|----------------:|-----------:|-----:|-----------:|\n";

@@ -149,7 +149,7 @@ Likelihood gaussian(double sigma, bool robust, double outlier_px, double estimat
 
 namespace pose {
 Source perturb(double sigma_t, double sigma_r, int candidates) { return PosePerturb{sigma_t, sigma_r, candidates}; }
-Source fit(double scale) { return PoseFit{scale}; }
+Source fit(double scale, double estimate_scale) { return PoseFit{scale, estimate_scale}; }
 }  // namespace pose
 
 }  // namespace ksmc::stdlib::tabletop::blocks

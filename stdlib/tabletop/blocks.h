@@ -47,9 +47,11 @@ struct PosePerturb {
 };
 // Proposal source `pose.fit` (the keypoint-fit move, fit_kernel.h): an independence proposal
 // from the Laplace approximation of the object's keypoint likelihood (keypoint_fit.h), its
-// covariance scaled by scale².
+// covariance scaled by scale². With estimate_scale > 0 it is the equal mixture of that and of
+// N(input estimate, estimate_scale² · diag(σ_t², σ_r²)), σ the likelihood's estimate_sigma_*.
 struct PoseFit {
   double scale = 0.5;
+  double estimate_scale = 0.0;  // 0: the keypoint fit alone
 };
 using Source = std::variant<PosePerturb, PoseFit>;
 
@@ -98,7 +100,7 @@ Likelihood gaussian(double sigma, bool robust, double outlier_px, double estimat
 
 namespace pose {
 Source perturb(double sigma_t, double sigma_r, int candidates);
-Source fit(double scale);
+Source fit(double scale, double estimate_scale);
 }  // namespace pose
 
 // Whether bodies a and b touch in the sense of obb::hover with tolerance eps.

@@ -31,6 +31,10 @@ struct KsmValues {
   static constexpr double overhang_margin = 0.005;
   static constexpr double estimate_sigma_t = 0.003;                   // 3 mm
   static constexpr double estimate_sigma_r = 0.026179938779914945;    // 1.5 deg
+  // kernel fit = pose.fit(scale = 1, estimate_scale = 2), scheduled with this probability.
+  static constexpr double fit_share = 0.2;
+  static constexpr double fit_scale = 1.0;
+  static constexpr double fit_estimate_scale = 2.0;
 };
 
 // A literal reading of the seed: 3 deg, 4 mm, 4 mm, plain Gaussian (sigma 1 px). The seed has
@@ -48,6 +52,9 @@ struct SeedValues {
   static constexpr double overhang_margin = KsmValues::overhang_margin;
   static constexpr double estimate_sigma_t = KsmValues::estimate_sigma_t;  // not in the seed either
   static constexpr double estimate_sigma_r = KsmValues::estimate_sigma_r;
+  static constexpr double fit_share = 0.0;  // the seed's refine move alone
+  static constexpr double fit_scale = KsmValues::fit_scale;
+  static constexpr double fit_estimate_scale = KsmValues::fit_estimate_scale;
 };
 
 // The generated program's predicate named `name`, or -1.
@@ -109,7 +116,14 @@ struct Fixture {
     if (decisions) b.outputs.push_back(blk::scene::decisions(gen::kPred_falseEst, gen::kPred_hidden));
     b.kernels.push_back({"refine", "refine", blk::Move::perturb, {blk::pose::perturb(0.001, 0.008726646259971648, 20)},
                          "kernel refine(o: object) reverse refine = pose.perturb(...)"});
-    b.schedule.push_back({0, ksmc::runtime::domain::ScheduleRow::kForever, {{"refine", 1.0}}});
+    if (V::fit_share > 0.0) {
+      b.kernels.push_back({"fit", "fit", blk::Move::fit, {blk::pose::fit(V::fit_scale, V::fit_estimate_scale)},
+                           "kernel fit(o: object) reverse fit = pose.fit(...)"});
+      b.schedule.push_back({0, ksmc::runtime::domain::ScheduleRow::kForever,
+                            {{"refine", 1.0 - V::fit_share}, {"fit", V::fit_share}}});
+    } else {
+      b.schedule.push_back({0, ksmc::runtime::domain::ScheduleRow::kForever, {{"refine", 1.0}}});
+    }
     return b;
   }
 };

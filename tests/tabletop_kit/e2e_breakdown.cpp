@@ -5,10 +5,14 @@
 //
 //   tabletop_e2e_breakdown [iterations=300] [scenes=50] [prior=map|log_z] [current_competes=1|0] [sigma_t_mm sigma_r_deg]
 //                          [pose_sigma_mm pose_sigma_deg]  (KitOptions::pose_sigma_t/_r over the domain's estimate_sigma_*; 0 0: no pose term)
+// KSMC_TTKIT_FITS=1 prints each object's keypoint fit against the truth and the lowest point of
+// its box at the truth, the input, the fit and the reported state; with KSMC_TTKIT_LL=1 also
+// its likelihood at those poses and the prior with the object moved to its fit.
 // With KSMC_TTKIT_FAMILY=<family> the scenes are that noise-model family's (tools/tabletop_families,
-// batch seed 2027, as tabletop_family_eval draws them).
+// batch seed 2027, as tabletop_family_eval draws them; KSMC_TTKIT_SEED=<seed> another batch).
 //
 // A development tool for docs/tabletop_kit.md "Results", not a test.
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <map>
@@ -87,7 +91,9 @@ int main(int argc, char** argv) {
   for (int i = 0; i < n_scenes; ++i) {
     const char* family = std::getenv("KSMC_TTKIT_FAMILY");
     namespace tf = ksmc::tools::tabletop_families;
-    const auto g = family ? tf::generate(tf::family(family), tf::family_scene_seed(tf::family(family), 2027, static_cast<std::uint64_t>(i)))
+    const char* batch = std::getenv("KSMC_TTKIT_SEED");
+    const std::uint64_t batch_seed = batch ? std::strtoull(batch, nullptr, 10) : 2027;
+    const auto g = family ? tf::generate(tf::family(family), tf::family_scene_seed(tf::family(family), batch_seed, static_cast<std::uint64_t>(i)))
                           : sim::generate_scene(sim::scene_seed(2026, static_cast<std::uint64_t>(i)), opt);
     auto load = tt::parse_scene(nlohmann::json::parse(sim::scene_json(g)), "scene", ".");
     const auto scene = std::make_shared<const tt::Scene>(std::move(load.scene));
@@ -102,11 +108,32 @@ int main(int argc, char** argv) {
         const auto fit = tt::fit_keypoints(*scene, scene->objects[static_cast<std::size_t>(idx)]);
         if (!fit.ok) continue;
         const Eigen::Vector3d d = fit.mean.t - o.clean_pose.t;
-        std::cout << fmt::format("fit {} kp {} inl {}: |dt| {:.2f} mm dz {:.2f} mm rot {:.2f} deg; sd t {:.2f} {:.2f} {:.2f} mm bottom {:.2f} mm\n",
-                                 o.id, scene->objects[static_cast<std::size_t>(idx)].keypoints_model.size(), fit.inliers,
+        const auto& so = scene->objects[static_cast<std::size_t>(idx)];
+        const auto& reported = r.scene.objects[static_cast<std::size_t>(idx)].pose;
+        auto lowest = [&so](const auto& p) { return 1e3 * tt::Obb::from_pose(tt::Pose{p.t, p.q}, so.size).min_z(); };
+        std::cout << fmt::format("fit {} kp {} inl {}: |dt| {:.2f} mm dz {:.2f} mm rot {:.2f} deg; sd t {:.2f} {:.2f} {:.2f} mm bottom {:.2f} mm; "
+                                 "lowest z true {:.1f} input {:.1f} fit {:.1f} reported {:.1f} mm\n",
+                                 o.id, so.keypoints_model.size(), fit.inliers,
                                  1e3 * d.norm(), 1e3 * d.z(), 57.29578 * Eigen::AngleAxisd(fit.mean.q * o.clean_pose.q.conjugate()).angle(),
                                  1e3 * std::sqrt(fit.covariance(0, 0)), 1e3 * std::sqrt(fit.covariance(1, 1)),
-                                 1e3 * std::sqrt(fit.covariance(2, 2)), 1e3 * fit.bottom_sigma);
+                                 1e3 * std::sqrt(fit.covariance(2, 2)), 1e3 * fit.bottom_sigma, lowest(o.clean_pose), lowest(so.pose),
+                                 lowest(fit.mean), lowest(reported));
+        if (std::getenv("KSMC_TTKIT_LL")) {
+          kit::TabletopModel m(scene, binding, options);  // at the reported state
+          const auto i_obj = static_cast<std::size_t>(idx);
+          for (std::size_t j = 0; j < r.scene.objects.size(); ++j) {
+            m.begin_move(j, r.scene.objects[j].pose, std::nan(""));
+            m.accept();
+          }
+          const double prior_rep = m.log_prior();
+          m.begin_move(i_obj, fit.mean, std::nan(""));
+          const double prior_fit = m.log_prior();
+          m.reject();
+          std::cout << fmt::format("    likelihood input {:.1f} fit {:.1f} reported {:.1f}; prior at reported {:.2f}, "
+                                   "with this object at its fit {:.2f}\n",
+                                   m.object_log_likelihood_at(i_obj, so.pose), m.object_log_likelihood_at(i_obj, fit.mean),
+                                   m.object_log_likelihood_at(i_obj, reported), prior_rep, prior_fit);
+        }
       }
     for (const auto& o : g.objects) {  // pose errors of real objects, input and reported state
       if (o.false_kind != sim::FalseKind::none) continue;

@@ -44,8 +44,15 @@ TEST_CASE("the generated binding is the fixture's copy of domains/tabletop.ksm, 
   REQUIRE(g.outputs.size() == 1);
   CHECK(g.outputs[0].false_est == f.outputs[0].false_est);
   CHECK(g.outputs[0].hidden == f.outputs[0].hidden);
-  REQUIRE(g.kernels.size() == 1);
+  REQUIRE(g.kernels.size() == 2);
+  REQUIRE(f.kernels.size() == 2);
   CHECK(g.kernels[0].name == f.kernels[0].name);
+  CHECK(g.kernels[1].name == f.kernels[1].name);
+  const auto& gfit = std::get<blk::PoseFit>(g.kernels[1].sources.at(0));
+  const auto& ffit = std::get<blk::PoseFit>(f.kernels[1].sources.at(0));
+  CHECK(gfit.scale == ffit.scale);
+  CHECK(gfit.estimate_scale == ffit.estimate_scale);
+  CHECK(g.schedule.at(0).probabilities == f.schedule.at(0).probabilities);
   REQUIRE(g.kernels[0].sources.size() == 1);
   const auto& gs = std::get<blk::PosePerturb>(g.kernels[0].sources[0]);
   const auto& fs = std::get<blk::PosePerturb>(f.kernels[0].sources[0]);
@@ -76,6 +83,7 @@ TEST_CASE("kernels need pose.perturb sources; the schedule names declared kernel
   CHECK(binding_error(b).find("kernel refine") != std::string::npos);
   blk::Binding renamed = ksm_binding();
   renamed.kernels[0].name = renamed.kernels[0].reverse = "jiggle";
+  renamed.kernels.resize(1);
   renamed.schedule[0].probabilities = {{"jiggle", 1.0}};
   auto scene = std::make_shared<const ksmc::stdlib::tabletop::Scene>();
   const kit::KitSetup k = kit::make_setup(renamed, scene);  // a kernel's name is the author's choice
@@ -96,20 +104,22 @@ TEST_CASE("several sources of one kernel: each move uses one of them") {
 
 TEST_CASE("pose.fit kernel: exact independence densities, runs beside refine") {
   blk::Binding b = ksm_binding();
-  b.kernels.push_back({"fit", "fit", blk::Move::fit, {blk::pose::fit(0.5)}, "kernel fit(o) reverse fit = pose.fit(...)"});
+  REQUIRE(b.kernels.at(0).name == "refine");
+  b.kernels.resize(1);
+  b.kernels.push_back({"fit", "fit", blk::Move::fit, {blk::pose::fit(0.5, 0.0)}, "kernel fit(o) reverse fit = pose.fit(...)"});
   b.schedule[0].probabilities = {{"refine", 0.5}, {"fit", 0.5}};
   // A fit kernel with a perturb source (or the reverse) is refused.
   blk::Binding wrong = b;
   wrong.kernels[1].sources = {blk::pose::perturb(0.001, 0.01, 5)};
   CHECK(binding_error(wrong).find("pose.fit") != std::string::npos);
   blk::Binding mixed = b;
-  mixed.kernels[0].sources.push_back(blk::pose::fit(1.0));
+  mixed.kernels[0].sources.push_back(blk::pose::fit(1.0, 0.0));
   CHECK(binding_error(mixed).find("pose.perturb") != std::string::npos);
 
   const auto scene = std::make_shared<const ksmc::stdlib::tabletop::Scene>(
       ksmc::stdlib::tabletop::load_scene(std::filesystem::path(KSMC_SOURCE_DIR) / "examples/tabletop/seed_example.json").scene);
   kit::TabletopModel model(scene, b);
-  const kit::FitKernel k(b.kernels[1]);
+  const kit::FitKernel k(b.kernels[1], b.likelihood.estimate_sigma_t, b.likelihood.estimate_sigma_r);
   ksmc::runtime::mcmc::Rng rng(7);
   const auto before = model.scene().objects;
   const auto p = k.propose(model, rng);

@@ -81,13 +81,13 @@ TEST_CASE("50 generated scenes: false / hidden / support accuracy") {
   // scenes (seed 2026), with a small margin. docs/tabletop_kit.md lists every remaining
   // miss (intersecting pairs that no evidence orders, truth the estimate contradicts).
   if (iterations() == 300) {
-    CHECK(initial.is_false.f1() >= 0.91);   // measured 0.929
-    CHECK(initial.is_hidden.f1() >= 0.95);  // 0.967
-    CHECK(initial.support.f1() >= 0.98);    // 0.993
-    CHECK(ksm.is_false.f1() >= 0.92);       // 0.949 (target 0.95: missed by 0.001, see docs)
-    CHECK(ksm.is_hidden.f1() >= 0.955);     // 0.974 (target 0.9: reached)
-    CHECK(ksm.support.f1() >= 0.98);        // 0.995
-    CHECK(ksm.undecided <= 20);             // 10
+    CHECK(initial.is_false.f1() >= 0.91);   // measured 0.940
+    CHECK(initial.is_hidden.f1() >= 0.95);  // 0.961
+    CHECK(initial.support.f1() >= 0.98);    // 0.994
+    CHECK(ksm.is_false.f1() >= 0.92);       // 0.931 (target 0.95: missed, see docs)
+    CHECK(ksm.is_hidden.f1() >= 0.955);     // 0.967 (target 0.9: reached)
+    CHECK(ksm.support.f1() >= 0.98);        // 0.993
+    CHECK(ksm.undecided <= 20);             // 9
     CHECK(ksm.support.f1() > seed.support.f1());
     CHECK(ksm.is_false.f1() > seed.is_false.f1());
   }

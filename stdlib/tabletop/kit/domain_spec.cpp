@@ -65,7 +65,7 @@ void check_binding(const blocks::Binding& b) {
     }
   if (b.kernels.empty()) throw rd::ConfigError(where + ": the tabletop kit needs at least one kernel");
   for (const auto& k : b.kernels) {  // throws for what it cannot run
-    if (k.move == blocks::Move::fit) FitKernel check(k);
+    if (k.move == blocks::Move::fit) FitKernel check(k, b.likelihood.estimate_sigma_t, b.likelihood.estimate_sigma_r);
     else RefineKernel check(k, true);
   }
 }
@@ -182,9 +182,11 @@ KitSetup make_setup(const blocks::Binding& binding, std::shared_ptr<const Scene>
   k.setup.model_factory = [b, scene, options](unsigned) -> std::unique_ptr<rm::Model> {
     return std::make_unique<TabletopModel>(scene, *b, options);
   };
+  const double estimate_sigma_t = options.pose_sigma_t.value_or(binding.likelihood.estimate_sigma_t);
+  const double estimate_sigma_r = options.pose_sigma_r.value_or(binding.likelihood.estimate_sigma_r);
   rd::KernelTable table = rd::make_kernels(binding.kernels, binding.schedule, [&](const auto& decl) {
     if (decl.move == blocks::Move::fit)
-      return std::shared_ptr<const rm::Kernel>(std::make_shared<const FitKernel>(decl));
+      return std::shared_ptr<const rm::Kernel>(std::make_shared<const FitKernel>(decl, estimate_sigma_t, estimate_sigma_r));
     return std::shared_ptr<const rm::Kernel>(std::make_shared<const RefineKernel>(decl, options.current_competes));
   });
   k.setup.kernels = std::move(table.kernels);

@@ -69,6 +69,8 @@ class TabletopModel : public runtime::mcmc::Model {
   const runtime::domain::Semantics<blocks::Scene>& semantics() const noexcept { return sem_; }
   const blocks::Binding& binding() const noexcept { return binding_; }
   const KitOptions& options() const noexcept { return options_; }
+  // Object `object`'s input pose estimate (the chain's start and the pose-estimate term's mean).
+  const Pose& input_pose(std::size_t object) const { return input_->objects.at(object).pose; }
   double object_log_likelihood(std::size_t object) const { return object_ll_[object]; }
   double object_log_likelihood_at(std::size_t object, const Pose& pose) const;
   // Indices of the objects with at least one keypoint (what the refine move may pick).
