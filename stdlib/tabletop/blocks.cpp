@@ -142,8 +142,9 @@ Output decisions(std::int32_t false_est, std::int32_t hidden) { return Decisions
 Prior mln() { return MlnPrior{}; }
 
 namespace keypoints {
-Likelihood gaussian(double sigma, bool robust, double outlier_px, double estimate_sigma_t, double estimate_sigma_r) {
-  return KeypointGaussian{sigma, robust, outlier_px, estimate_sigma_t, estimate_sigma_r};
+Likelihood gaussian(double sigma, bool robust, double outlier_px, double estimate_sigma_t, double estimate_sigma_r,
+                    bool sigma_from_scene) {
+  return KeypointGaussian{sigma, robust, outlier_px, estimate_sigma_t, estimate_sigma_r, sigma_from_scene};
 }
 }  // namespace keypoints
 

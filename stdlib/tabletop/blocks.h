@@ -36,6 +36,9 @@ struct KeypointGaussian {
   double outlier_px = 20.0;
   double estimate_sigma_t = 0.0;  // [m] the input pose estimate as a measurement; 0: off
   double estimate_sigma_r = 0.0;  // [rad]
+  // σ (and outlier_px with it) raised to the scene's own pixel noise when that is larger
+  // (pixel_noise.h; kit::scene_likelihood).
+  bool sigma_from_scene = false;
 };
 using Likelihood = KeypointGaussian;
 
@@ -95,7 +98,8 @@ Output decisions(std::int32_t false_est, std::int32_t hidden);
 Prior mln();
 
 namespace keypoints {
-Likelihood gaussian(double sigma, bool robust, double outlier_px, double estimate_sigma_t, double estimate_sigma_r);
+Likelihood gaussian(double sigma, bool robust, double outlier_px, double estimate_sigma_t, double estimate_sigma_r,
+                    bool sigma_from_scene);
 }  // namespace keypoints
 
 namespace pose {

@@ -82,7 +82,7 @@ TEST_CASE("calls: stdlib signatures, parameters and unit dimensions", "[frontend
                  "parameter 'pose' of 'obb.stable' expects a value of type 'se3', got a value of type 'vec3'"));
   CHECK(contains(calls("extract stable(o) = obb.stable(pose[o], size[o], tol = 3 km);\n"), "unknown unit 'km'"));
   CHECK(contains(calls("likelihood keypoints.gaussian(sigma = 1 px, sigma = 1 px);\n"), "is given twice"));
-  CHECK(contains(calls("likelihood keypoints.gaussian(1 px, true, 2 px, 3 mm, 1 deg, 3);\n"), "too many arguments"));
+  CHECK(contains(calls("likelihood keypoints.gaussian(1 px, true, 2 px, 3 mm, 1 deg, false, 3);\n"), "too many arguments"));
   CHECK(calls("extract stable(o) = obb.stable(pose[o], size[o], tol = 3 deg);\nlikelihood keypoints.gaussian(2 px, robust = true);\n").empty());
   // Index variables must have the collection's index type.
   CHECK(contains(compile(kIn + "type unit;\ntype k;\nevidence R(unit), B(k);\nmodel w { unit[] : rect sampled; }\n"

@@ -1,5 +1,6 @@
 // The pose uncertainty the data imply: the keypoint fit with its Laplace covariance
-// (stdlib/tabletop/keypoint_fit.h) and the gap noise of resting objects (gap_noise.h).
+// (stdlib/tabletop/keypoint_fit.h), the gap noise of resting objects (gap_noise.h) and the
+// keypoints' pixel noise (pixel_noise.h).
 #include <catch2/catch.hpp>
 
 #include <random>
@@ -7,6 +8,7 @@
 #include "stdlib/tabletop/gap_noise.h"
 #include "stdlib/tabletop/keypoint_fit.h"
 #include "stdlib/tabletop/likelihood.h"
+#include "stdlib/tabletop/pixel_noise.h"
 #include "tests/tabletop/tabletop_test_util.h"
 
 using namespace ksmc::tests::tabletop;
@@ -126,4 +128,25 @@ TEST_CASE("gap noise: robust scale of resting gaps, outliers ignored") {
   tt::Scene one;
   one.objects.push_back(s.objects[0]);
   CHECK(tt::vertical_tolerance(tt::gap_noise(one, 0.17), 3.0, 0.005, 0.015) == 0.015);
+}
+
+TEST_CASE("pixel noise of a scene: the robust scale of the residuals at the keypoint fits") {
+  tt::Pose truth;
+  truth.t = Eigen::Vector3d(0.0, 0.0, 0.03);
+  for (const double sigma : {0.5, 2.5}) {
+    tt::Scene s = keypoint_scene(truth, sigma, 11);
+    CHECK(tt::pixel_noise(s).sigma == 0.0);  // 36 residuals: too few to judge by
+    CHECK(tt::pixel_noise(s).residuals == 36);
+    for (const std::uint64_t seed : {12u, 13u, 14u}) {  // three more boxes, 144 residuals
+      tt::Scene more = keypoint_scene(truth, sigma, seed);
+      more.objects[0].id = "b" + std::to_string(seed);
+      more.objects[0].pose.t.x() += 0.002;  // estimates a little off: the fit starts there
+      s.objects.push_back(more.objects[0]);
+    }
+    const tt::PixelNoise n = tt::pixel_noise(s);
+    CHECK(n.residuals == 144);
+    // The fit takes 6 of each object's 36 degrees of freedom: about sigma · sqrt(30/36).
+    CHECK(n.sigma > 0.7 * sigma);
+    CHECK(n.sigma < 1.2 * sigma);
+  }
 }

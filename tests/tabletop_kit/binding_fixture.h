@@ -31,6 +31,7 @@ struct KsmValues {
   static constexpr double overhang_margin = 0.005;
   static constexpr double estimate_sigma_t = 0.003;                   // 3 mm
   static constexpr double estimate_sigma_r = 0.026179938779914945;    // 1.5 deg
+  static constexpr bool sigma_from_scene = true;
   // kernel fit = pose.fit(scale = 1, estimate_scale = 2), scheduled with this probability.
   static constexpr double fit_share = 0.2;
   static constexpr double fit_scale = 1.0;
@@ -52,6 +53,7 @@ struct SeedValues {
   static constexpr double overhang_margin = KsmValues::overhang_margin;
   static constexpr double estimate_sigma_t = KsmValues::estimate_sigma_t;  // not in the seed either
   static constexpr double estimate_sigma_r = KsmValues::estimate_sigma_r;
+  static constexpr bool sigma_from_scene = false;  // the seed's fixed 1 px
   static constexpr double fit_share = 0.0;  // the seed's refine move alone
   static constexpr double fit_scale = KsmValues::fit_scale;
   static constexpr double fit_estimate_scale = KsmValues::fit_estimate_scale;
@@ -112,7 +114,8 @@ struct Fixture {
       b.extractors.push_back({p, &overhang, "extract overhang(o) = obb.overhang(o, ...)"});
     b.extractors.push_back({gen::kPred_table, &table, "extract table(o) = scene.is_table(o)"});
     b.priors.push_back(blk::mln());
-    b.likelihood = blk::keypoints::gaussian(1.0, V::robust, V::outlier_px, V::estimate_sigma_t, V::estimate_sigma_r);
+    b.likelihood = blk::keypoints::gaussian(1.0, V::robust, V::outlier_px, V::estimate_sigma_t, V::estimate_sigma_r,
+                                            V::sigma_from_scene);
     if (decisions) b.outputs.push_back(blk::scene::decisions(gen::kPred_falseEst, gen::kPred_hidden));
     b.kernels.push_back({"refine", "refine", blk::Move::perturb, {blk::pose::perturb(0.001, 0.008726646259971648, 20)},
                          "kernel refine(o: object) reverse refine = pose.perturb(...)"});

@@ -41,6 +41,7 @@ TEST_CASE("the generated binding is the fixture's copy of domains/tabletop.ksm, 
   CHECK(g.likelihood.sigma_px == f.likelihood.sigma_px);
   CHECK(g.likelihood.robust == f.likelihood.robust);
   CHECK(g.likelihood.outlier_px == f.likelihood.outlier_px);
+  CHECK(g.likelihood.sigma_from_scene == f.likelihood.sigma_from_scene);
   REQUIRE(g.outputs.size() == 1);
   CHECK(g.outputs[0].false_est == f.outputs[0].false_est);
   CHECK(g.outputs[0].hidden == f.outputs[0].hidden);

@@ -1,4 +1,5 @@
-// pose.fit with estimate_scale (fit_kernel.h): the mixture's exact density, draws from both
+// keypoints.gaussian sigma_from_scene (kit_likelihood.h), and pose.fit with estimate_scale
+// (fit_kernel.h): the mixture's exact density, draws from both
 // parts, its refusal without a pose-estimate term, and the state it exists for: a real box
 // whose noisy estimate sinks 28 mm into the table, where the refine move alone stays
 // (pose_noise family, batch seed 2027, scene 5, box_9; docs/tabletop_families.md,
@@ -8,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <random>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -15,6 +17,7 @@
 #include "runtime/domain/config_error.h"
 #include "stdlib/tabletop/keypoint_fit.h"
 #include "stdlib/tabletop/kit/fit_kernel.h"
+#include "stdlib/tabletop/kit/kit_likelihood.h"
 #include "stdlib/tabletop/obb.h"
 #include "stdlib/tabletop/scene_io.h"
 #include "tests/tabletop_kit/binding_fixture.h"
@@ -146,4 +149,32 @@ TEST_CASE("a box whose estimate sinks 28 mm into the table: the mixture move rea
   CHECK(std::abs(z_moved - truth) < 8.0);
   CHECK(moved.probabilities[c.object].false_prob < 0.4);  // no longer read as a false estimate
   CHECK(stuck.probabilities[c.object].false_prob > 0.6);
+}
+
+TEST_CASE("keypoints.gaussian sigma_from_scene: the scene's pixel noise raises sigma and outlier_px") {
+  const blk::Binding& b = ksm_binding();
+  REQUIRE(b.likelihood.sigma_from_scene);
+  REQUIRE(b.likelihood.sigma_px == 1.0);
+  const Case c = sunk_box();  // keypoints with 1 px noise
+  const auto own = kit::scene_likelihood(*c.scene, b.likelihood);
+  CHECK(own.sigma_px >= 1.0);
+  CHECK(own.sigma_px < 1.3);
+  // 3 px more noise on every keypoint: about sqrt(1 + 9) px.
+  tt::Scene noisy = *c.scene;
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> px(0.0, 3.0);
+  for (auto& o : noisy.objects)
+    for (auto& uv : o.keypoints_image) uv += Eigen::Vector2d(px(rng), px(rng));
+  const auto scaled = kit::scene_likelihood(noisy, b.likelihood);
+  CHECK(scaled.sigma_px > 2.4);
+  CHECK(scaled.sigma_px < 3.6);
+  CHECK(scaled.outlier_px == Approx(b.likelihood.outlier_px * scaled.sigma_px / b.likelihood.sigma_px));
+  CHECK(scaled.estimate_sigma_t == b.likelihood.estimate_sigma_t);
+  // The model scores with it; without the flag, with the declared values.
+  const kit::TabletopModel model(std::make_shared<const tt::Scene>(noisy), b);
+  CHECK(model.likelihood().sigma_px == scaled.sigma_px);
+  blk::Binding fixed = b;
+  fixed.likelihood.sigma_from_scene = false;
+  CHECK(kit::scene_likelihood(noisy, fixed.likelihood).sigma_px == 1.0);
+  CHECK(kit::scene_likelihood(noisy, fixed.likelihood).outlier_px == b.likelihood.outlier_px);
 }

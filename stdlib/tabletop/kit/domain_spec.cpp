@@ -15,6 +15,7 @@
 #include "stdlib/tabletop/graph_dot.h"
 #include "stdlib/tabletop/hope_import.h"
 #include "stdlib/tabletop/kit/fit_kernel.h"
+#include "stdlib/tabletop/kit/kit_likelihood.h"
 #include "stdlib/tabletop/kit/input_cost.h"
 #include "stdlib/tabletop/kit/refine_kernel.h"
 #include "stdlib/tabletop/overlay.h"
@@ -200,7 +201,13 @@ KitSetup make_setup(const blocks::Binding& binding, std::shared_ptr<const Scene>
                            {"likelihood",
                             {{"sigma_px", binding.likelihood.sigma_px},
                              {"robust", binding.likelihood.robust},
-                             {"outlier_px", binding.likelihood.outlier_px}}}};
+                             {"outlier_px", binding.likelihood.outlier_px},
+                             {"sigma_from_scene", binding.likelihood.sigma_from_scene}}}};
+  if (binding.likelihood.sigma_from_scene) {  // what this scene is scored with
+    const blocks::Likelihood used = scene_likelihood(*scene, binding.likelihood);
+    k.setup.summary_extra["likelihood"]["scene_sigma_px"] = used.sigma_px;
+    k.setup.summary_extra["likelihood"]["scene_outlier_px"] = used.outlier_px;
+  }
   return k;
 }
 

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "stdlib/tabletop/likelihood.h"
+#include "stdlib/tabletop/pixel_noise.h"
 
 namespace ksmc::stdlib::tabletop::kit {
 
@@ -30,6 +31,16 @@ double object_log_likelihood(const Scene& scene, const SceneObject& object, cons
     sum += norm - d2 / (2.0 * s2);
   }
   return sum;
+}
+
+blocks::KeypointGaussian scene_likelihood(const Scene& scene, const blocks::KeypointGaussian& declared) {
+  blocks::KeypointGaussian l = declared;
+  if (!declared.sigma_from_scene) return l;
+  const PixelNoise noise = pixel_noise(scene);
+  const double scale = std::max(1.0, noise.sigma / declared.sigma_px);
+  l.sigma_px *= scale;
+  l.outlier_px *= scale;
+  return l;
 }
 
 }  // namespace ksmc::stdlib::tabletop::kit

@@ -19,4 +19,11 @@ namespace ksmc::stdlib::tabletop::kit {
 double object_log_likelihood(const Scene& scene, const SceneObject& object, const Pose& pose_in_table,
                              const blocks::KeypointGaussian& model);
 
+// The likelihood a scene is scored with: `declared`, or, with sigma_from_scene, σ and
+// outlier_px both multiplied by max(1, scene pixel noise / σ) (pixel_noise.h: 1.4826 × median
+// |residual| at the objects' keypoint fits; unchanged when the scene has fewer than 40
+// residuals). A function of the observations alone, so every chain of a run, and the model
+// restored to the best state, score with the same σ.
+blocks::KeypointGaussian scene_likelihood(const Scene& scene, const blocks::KeypointGaussian& declared);
+
 }  // namespace ksmc::stdlib::tabletop::kit

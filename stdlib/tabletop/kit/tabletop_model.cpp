@@ -44,6 +44,7 @@ TabletopModel::TabletopModel(std::shared_ptr<const Scene> initial, const blocks:
       options_(options),
       mln_prior_(has_mln_prior(binding)),
       input_(initial),
+      likelihood_(scene_likelihood(*initial, binding.likelihood)),
       scene_(*initial),
       sem_(binding, semantic_options(options)) {
   for (std::size_t i = 0; i < scene().objects.size(); ++i)
@@ -72,7 +73,7 @@ void TabletopModel::recompute_all() {
 }
 
 double TabletopModel::object_log_likelihood_at(std::size_t object, const Pose& pose) const {
-  double ll = kit::object_log_likelihood(scene(), scene().objects.at(object), pose, binding_.likelihood);
+  double ll = kit::object_log_likelihood(scene(), scene().objects.at(object), pose, likelihood_);
   // The input pose estimate as a measurement (keypoints.gaussian's estimate_sigma_*).
   const Pose& estimate = input_->objects[object].pose;
   const double sigma_t = options_.pose_sigma_t.value_or(binding_.likelihood.estimate_sigma_t);

@@ -69,6 +69,9 @@ class TabletopModel : public runtime::mcmc::Model {
   const runtime::domain::Semantics<blocks::Scene>& semantics() const noexcept { return sem_; }
   const blocks::Binding& binding() const noexcept { return binding_; }
   const KitOptions& options() const noexcept { return options_; }
+  // The keypoint likelihood this scene is scored with (the binding's, σ from the scene when
+  // it declares sigma_from_scene; kit_likelihood.h).
+  const blocks::Likelihood& likelihood() const noexcept { return likelihood_; }
   // Object `object`'s input pose estimate (the chain's start and the pose-estimate term's mean).
   const Pose& input_pose(std::size_t object) const { return input_->objects.at(object).pose; }
   double object_log_likelihood(std::size_t object) const { return object_ll_[object]; }
@@ -86,6 +89,7 @@ class TabletopModel : public runtime::mcmc::Model {
   KitOptions options_;
   bool mln_prior_ = false;
   std::shared_ptr<const Scene> input_;  // the input estimates (pose term of the likelihood)
+  blocks::Likelihood likelihood_;       // the binding's, with the scene's σ (scene_likelihood)
   blocks::Scene scene_;
   runtime::domain::Semantics<blocks::Scene> sem_;
   std::vector<std::size_t> observed_;
