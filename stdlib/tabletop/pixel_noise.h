@@ -8,7 +8,9 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 
+#include "stdlib/tabletop/keypoint_fit.h"
 #include "stdlib/tabletop/scene.h"
 
 namespace ksmc::stdlib::tabletop {
@@ -18,7 +20,11 @@ struct PixelNoise {
   std::size_t residuals = 0;   // residuals seen (2 per keypoint of a fitted object)
 };
 
+// `fit_of(i)`: the keypoint fit of scene.objects[i] from its input estimate (a caller that
+// caches fits, blocks::Scene::fit, passes them; the overload below computes them).
 // Fewer than `min_residuals` residuals: sigma 0 (too little to judge by).
+using FitOf = std::function<const KeypointFit&(std::size_t object)>;
+PixelNoise pixel_noise(const Scene& scene, const FitOf& fit_of, std::size_t min_residuals = 40);
 PixelNoise pixel_noise(const Scene& scene, std::size_t min_residuals = 40);
 
 }  // namespace ksmc::stdlib::tabletop

@@ -6,7 +6,6 @@
 #include <numbers>
 
 #include "stdlib/tabletop/likelihood.h"
-#include "stdlib/tabletop/pixel_noise.h"
 
 namespace ksmc::stdlib::tabletop::kit {
 
@@ -33,14 +32,25 @@ double object_log_likelihood(const Scene& scene, const SceneObject& object, cons
   return sum;
 }
 
-blocks::KeypointGaussian scene_likelihood(const Scene& scene, const blocks::KeypointGaussian& declared) {
+namespace {
+
+blocks::KeypointGaussian scaled(const blocks::KeypointGaussian& declared, const PixelNoise& noise) {
   blocks::KeypointGaussian l = declared;
-  if (!declared.sigma_from_scene) return l;
-  const PixelNoise noise = pixel_noise(scene);
   const double scale = std::max(1.0, noise.sigma / declared.sigma_px);
   l.sigma_px *= scale;
   l.outlier_px *= scale;
   return l;
+}
+
+}  // namespace
+
+blocks::KeypointGaussian scene_likelihood(const Scene& scene, const blocks::KeypointGaussian& declared) {
+  return declared.sigma_from_scene ? scaled(declared, pixel_noise(scene)) : declared;
+}
+
+blocks::KeypointGaussian scene_likelihood(const Scene& scene, const blocks::KeypointGaussian& declared,
+                                          const FitOf& fit_of) {
+  return declared.sigma_from_scene ? scaled(declared, pixel_noise(scene, fit_of)) : declared;
 }
 
 }  // namespace ksmc::stdlib::tabletop::kit

@@ -11,6 +11,7 @@
 #pragma once
 
 #include "stdlib/tabletop/blocks.h"
+#include "stdlib/tabletop/pixel_noise.h"
 #include "stdlib/tabletop/pose.h"
 #include "stdlib/tabletop/scene.h"
 
@@ -24,6 +25,9 @@ double object_log_likelihood(const Scene& scene, const SceneObject& object, cons
 // |residual| at the objects' keypoint fits; unchanged when the scene has fewer than 40
 // residuals). A function of the observations alone, so every chain of a run, and the model
 // restored to the best state, score with the same σ.
+// `fit_of`: the objects' keypoint fits when the caller has them cached (pixel_noise.h).
 blocks::KeypointGaussian scene_likelihood(const Scene& scene, const blocks::KeypointGaussian& declared);
+blocks::KeypointGaussian scene_likelihood(const Scene& scene, const blocks::KeypointGaussian& declared,
+                                          const FitOf& fit_of);
 
 }  // namespace ksmc::stdlib::tabletop::kit

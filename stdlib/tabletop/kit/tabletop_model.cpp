@@ -44,11 +44,14 @@ TabletopModel::TabletopModel(std::shared_ptr<const Scene> initial, const blocks:
       options_(options),
       mln_prior_(has_mln_prior(binding)),
       input_(initial),
-      likelihood_(scene_likelihood(*initial, binding.likelihood)),
       scene_(*initial),
       sem_(binding, semantic_options(options)) {
   for (std::size_t i = 0; i < scene().objects.size(); ++i)
     if (!scene().objects[i].keypoints_model.empty()) observed_.push_back(i);
+  // From the fits the scene caches for the fit kernel: each object is fitted once.
+  likelihood_ = scene_likelihood(*initial, binding.likelihood, [this](std::size_t i) -> const KeypointFit& {
+    return scene_.fit(blocks::Scene::body_of_object(i));
+  });
   recompute_all();
 }
 
