@@ -109,6 +109,32 @@ bool overhang(const Scene& s, std::int32_t o, double eps, double margin) {
   return extract_overhang(s.box(o), supporters, margin);
 }
 
+bool leaning(const Scene& s, std::int32_t o, double tol, double eps) {
+  const Obb& box = s.box(o);
+  if (s.is_table(o) || tilt_angle(box) <= tol) return false;
+  s.note_hover_tolerance(eps);  // touching_row then tracks the bodies this atom reads
+  // The side the box falls to without the body it leans on: from its lowest vertex (on the
+  // edge it stands on) towards its centre, in the table plane.
+  const auto corners = box.vertices();
+  const Eigen::Vector3d low = *std::min_element(corners.begin(), corners.end(),
+                                                [](const auto& a, const auto& b) { return a.z() < b.z(); });
+  const Eigen::Vector2d falls = (box.center - low).head<2>();
+  const EvidenceParams cut = intersect_params(kDefaults.intersect_eps);
+  bool base = false, held = false;
+  for (std::size_t j = 0; j < s.bodies(); ++j) {
+    const auto b = static_cast<std::int32_t>(j);
+    if (b == o || !touching(s, o, b, eps)) continue;
+    if (intersect_from_geometry(s.pair(o, b, kDefaults.max_contact_eps()), cut)) continue;  // cut into, not held
+    const Obb& other = s.box(b);
+    if (s.is_table(b) || (tilt_angle(other) <= tol && extract_higher(box, other, kDefaults))) {
+      base = true;  // a surface under it
+    } else if ((other.closest_point(box.center) - box.center).head<2>().dot(falls) > 0.0) {
+      held = true;  // a body on the side it would fall to
+    }
+  }
+  return base && held;
+}
+
 }  // namespace obb
 
 bool touching(const Scene& s, std::int32_t a, std::int32_t b, double eps) {

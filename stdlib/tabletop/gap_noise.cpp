@@ -31,20 +31,25 @@ bool footprints_overlap(const Obb& a, const Obb& b) {
 
 }  // namespace
 
+double rest_gap(std::span<const Obb> boxes, std::size_t i, double stable_tol) {
+  const double bottom = boxes[i].min_z();
+  double best = bottom;  // the table top is at z = 0
+  for (std::size_t j = 0; j < boxes.size(); ++j) {
+    if (j == i || tilt_angle(boxes[j]) > stable_tol || boxes[j].max_z() >= boxes[i].center.z()) continue;
+    if (!footprints_overlap(boxes[i], boxes[j])) continue;
+    const double gap = bottom - boxes[j].max_z();
+    if (std::abs(gap) < std::abs(best)) best = gap;
+  }
+  return best;
+}
+
 GapNoise gap_noise(const Scene& scene, double stable_tol, double reach) {
   std::vector<Obb> boxes;
   for (const auto& o : scene.objects) boxes.push_back(o.obb());
   std::vector<double> gaps;
   for (std::size_t i = 0; i < boxes.size(); ++i) {
     if (tilt_angle(boxes[i]) > stable_tol) continue;
-    const double bottom = boxes[i].min_z();
-    double best = bottom;  // the table top is at z = 0
-    for (std::size_t j = 0; j < boxes.size(); ++j) {
-      if (j == i || tilt_angle(boxes[j]) > stable_tol || boxes[j].max_z() >= boxes[i].center.z()) continue;
-      if (!footprints_overlap(boxes[i], boxes[j])) continue;
-      const double gap = bottom - boxes[j].max_z();
-      if (std::abs(gap) < std::abs(best)) best = gap;
-    }
+    const double best = rest_gap(boxes, i, stable_tol);
     if (std::abs(best) <= reach) gaps.push_back(std::abs(best));
   }
   GapNoise n;

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 
 #include "stdlib/tabletop/scene.h"
 
@@ -20,6 +21,12 @@ struct GapNoise {
   double sigma = 0.0;     // [m] robust standard deviation of the resting gaps
   std::size_t gaps = 0;   // stable objects with a surface under them within `reach`
 };
+
+// The signed gap [m] between the lowest point of boxes[i] and the nearest surface it can rest
+// on: the table top (z = 0) or the top of another box that rests on a face (tilt within
+// `stable_tol` [rad]), whose footprint overlaps boxes[i]'s and whose top lies below boxes[i]'s
+// centre. Negative: the box cuts into that surface. boxes[i] itself may be tilted.
+double rest_gap(std::span<const Obb> boxes, std::size_t i, double stable_tol);
 
 // `stable_tol` [rad]: objects tilted more are not resting on a face; `reach` [m]: surfaces
 // farther than this above or below an object's lowest point are not its support.

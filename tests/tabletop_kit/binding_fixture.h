@@ -16,7 +16,8 @@ namespace blk = ksmc::stdlib::tabletop::blocks;
 namespace gen = ksmc_generated::tabletop;
 
 // domains/tabletop.ksm (10 deg, 4 mm, 5 mm, 4 mm; robust Gaussian, 5 px; overlap 0.5 of the
-// smaller box, flatter by 0.5 deg; overhang within 4 mm, beyond 5 mm; the pose estimate as a
+// smaller box, flatter by 0.5 deg; overhang within 4 mm, beyond 5 mm; leaning beyond 10 deg,
+// within 4 mm; the pose estimate as a
 // measurement, 3 mm / 1.5 deg).
 struct KsmValues {
   static constexpr double stable_tol = 0.17453292519943295;
@@ -29,6 +30,8 @@ struct KsmValues {
   static constexpr double flatter_margin = 0.008726646259971648;
   static constexpr double overhang_eps = 0.004;
   static constexpr double overhang_margin = 0.005;
+  static constexpr double leaning_tol = 0.17453292519943295;  // 10 deg
+  static constexpr double leaning_eps = 0.004;
   static constexpr double estimate_sigma_t = 0.003;                   // 3 mm
   static constexpr double estimate_sigma_r = 0.026179938779914945;    // 1.5 deg
   static constexpr bool sigma_from_scene = true;
@@ -39,7 +42,8 @@ struct KsmValues {
 };
 
 // A literal reading of the seed: 3 deg, 4 mm, 4 mm, plain Gaussian (sigma 1 px). The seed has
-// no overlap / flatter / overhang evidence; the domain file's values serve its rules r23, r24.
+// no overlap / flatter / overhang / leaning evidence; the domain file's values serve its rules
+// r23-r25.
 struct SeedValues {
   static constexpr double stable_tol = 0.05235987755982988;
   static constexpr double contact_eps = 0.004;
@@ -51,6 +55,8 @@ struct SeedValues {
   static constexpr double flatter_margin = KsmValues::flatter_margin;
   static constexpr double overhang_eps = KsmValues::overhang_eps;
   static constexpr double overhang_margin = KsmValues::overhang_margin;
+  static constexpr double leaning_tol = KsmValues::leaning_tol;
+  static constexpr double leaning_eps = KsmValues::leaning_eps;
   static constexpr double estimate_sigma_t = KsmValues::estimate_sigma_t;  // not in the seed either
   static constexpr double estimate_sigma_r = KsmValues::estimate_sigma_r;
   static constexpr bool sigma_from_scene = false;  // the seed's fixed 1 px
@@ -91,6 +97,9 @@ struct Fixture {
   static bool overhang(const blk::Scene& s, const std::int32_t* c) {
     return blk::obb::overhang(s, c[0], V::overhang_eps, V::overhang_margin);
   }
+  static bool leaning(const blk::Scene& s, const std::int32_t* c) {
+    return blk::obb::leaning(s, c[0], V::leaning_tol, V::leaning_eps);
+  }
   static bool table(const blk::Scene& s, const std::int32_t* c) { return blk::scene::is_table(s, c[0]); }
 
   static blk::Binding make(bool decisions = true) {
@@ -112,6 +121,8 @@ struct Fixture {
       b.extractors.push_back({p, &flatter, "extract flatter(a, b) = obb.flatter(...)"});
     if (const std::int32_t p = predicate_named("overhang"); p >= 0)
       b.extractors.push_back({p, &overhang, "extract overhang(o) = obb.overhang(o, ...)"});
+    if (const std::int32_t p = predicate_named("leaning"); p >= 0)
+      b.extractors.push_back({p, &leaning, "extract leaning(o) = obb.leaning(o, ...)"});
     b.extractors.push_back({gen::kPred_table, &table, "extract table(o) = scene.is_table(o)"});
     b.priors.push_back(blk::mln());
     b.likelihood = blk::keypoints::gaussian(1.0, V::robust, V::outlier_px, V::estimate_sigma_t, V::estimate_sigma_r,

@@ -8,6 +8,7 @@
 // KSMC_TTKIT_FITS=1 prints each object's keypoint fit against the truth and the lowest point of
 // its box at the truth, the input, the fit and the reported state; with KSMC_TTKIT_LL=1 also
 // its likelihood at those poses and the prior with the object moved to its fit.
+// KSMC_TTKIT_LEANING=1 counts the objects with obb.leaning evidence (r25) at the input poses, by truth.
 // With KSMC_TTKIT_FAMILY=<family> the scenes are that noise-model family's (tools/tabletop_families,
 // batch seed 2027, as tabletop_family_eval draws them; KSMC_TTKIT_SEED=<seed> another batch).
 //
@@ -20,6 +21,7 @@
 
 #include <fmt/format.h>
 
+#include "stdlib/tabletop/gap_noise.h"
 #include "stdlib/tabletop/keypoint_fit.h"
 #include "stdlib/tabletop/pair_geometry.h"
 #include "stdlib/tabletop/scene_io.h"
@@ -38,6 +40,8 @@ std::string flag(std::optional<bool> d) { return d ? (*d ? "T" : "f") : "?"; }
 // Evidence summary of body b.
 std::string describe(const tt::Evidence& ev, std::size_t b) {
   std::string s = fmt::format("st={} hov={}", ev.stable[b] ? 1 : 0, ev.hover[b] ? 1 : 0);
+  if (b > 0)
+    s += fmt::format(" gap={:.1f}mm", 1e3 * tt::rest_gap(std::span<const tt::Obb>(ev.boxes).subspan(1), b - 1, 10.0 / 57.29577951308232));
   std::string sup_by, sups, con, inter;
   for (std::size_t o = 0; o < ev.size(); ++o) {
     if (o == b) continue;
@@ -88,6 +92,7 @@ int main(int argc, char** argv) {
   } err[2];
   long err_count = 0;
   std::map<std::string, int> categories;
+  std::map<std::string, std::pair<int, int>> leaning;  // truth class -> (objects, leaning at the input)
   for (int i = 0; i < n_scenes; ++i) {
     const char* family = std::getenv("KSMC_TTKIT_FAMILY");
     namespace tf = ksmc::tools::tabletop_families;
@@ -135,6 +140,18 @@ int main(int argc, char** argv) {
                                    m.object_log_likelihood_at(i_obj, reported), prior_rep, prior_fit);
         }
       }
+    if (std::getenv("KSMC_TTKIT_LEANING")) {  // obb.leaning (r25) at the input poses, by truth
+      const blk::Scene bs(*scene);
+      for (const auto& o : g.objects) {
+        const auto body = blk::Scene::body_of_object(static_cast<std::size_t>(r.scene.find(o.id)));
+        const std::string cls = o.false_kind != sim::FalseKind::none ? "false " + std::string(sim::to_string(o.false_kind))
+                                : o.stable                          ? "real, resting on a face"
+                                                                    : "real, tilted";
+        auto& [n, lean] = leaning[cls];
+        ++n;
+        lean += blk::obb::leaning(bs, body, 10.0 / 57.29577951308232, 0.004) ? 1 : 0;
+      }
+    }
     for (const auto& o : g.objects) {  // pose errors of real objects, input and reported state
       if (o.false_kind != sim::FalseKind::none) continue;
       const int idx = r.scene.find(o.id);
@@ -174,5 +191,7 @@ int main(int argc, char** argv) {
                              1e3 * err[which].z / err_count, 57.29578 * err[which].r / err_count);
   std::cout << "\n" << table(total) << "\ncategories:\n";
   for (const auto& [c, n] : categories) std::cout << fmt::format("  {:4} {}\n", n, c);
+  if (!leaning.empty()) std::cout << "\nleaning at the input poses (KSMC_TTKIT_LEANING):\n";
+  for (const auto& [c, v] : leaning) std::cout << fmt::format("  {:4} of {:4} {}\n", v.second, v.first, c);
   return 0;
 }

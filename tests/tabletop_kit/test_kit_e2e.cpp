@@ -84,7 +84,7 @@ TEST_CASE("50 generated scenes: false / hidden / support accuracy") {
     CHECK(initial.is_false.f1() >= 0.91);   // measured 0.940
     CHECK(initial.is_hidden.f1() >= 0.95);  // 0.961
     CHECK(initial.support.f1() >= 0.98);    // 0.994
-    CHECK(ksm.is_false.f1() >= 0.91);       // 0.920 (target 0.95: missed, see docs)
+    CHECK(ksm.is_false.f1() >= 0.92);       // 0.929 (target 0.95: missed, see docs)
     CHECK(ksm.is_hidden.f1() >= 0.955);     // 0.967 (target 0.9: reached)
     CHECK(ksm.support.f1() >= 0.98);        // 0.991
     CHECK(ksm.undecided <= 20);             // 11

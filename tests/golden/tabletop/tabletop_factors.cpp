@@ -16,12 +16,13 @@ constexpr double kW_falseest_7939 = 0.8472978603872034;  // prob 0.7
 constexpr double kW_falseest_a837 = 2.1972245773362196;  // prob 0.9
 constexpr double kW_supported_6fcc = 2.1972245773362196;  // prob 0.9
 constexpr double kW_supported_hidden_falseest_af4c = 2.1972245773362196;  // prob 0.9
-constexpr double kW_falseest_b00b = 2.1972245773362196;  // prob 0.9
+constexpr double kW_falseest_ea5e = 2.1972245773362196;  // prob 0.9
 constexpr double kW_hidden_8a9f = 2.1972245773362196;  // prob 0.9
 constexpr double kW_falseest_317c = 0.8472978603872034;  // prob 0.7
 constexpr double kW_hidden_5734 = 0.8472978603872034;  // prob 0.7
 constexpr double kW_falseest_cfb1 = 2.1972245773362196;  // prob 0.9
 constexpr double kW_falseest_hidden_ead4 = 2.1972245773362196;  // prob 0.9
+constexpr double kW_falseest_4cf5 = 2.9444389791664394;  // prob 0.95
 
 }  // namespace
 
@@ -42,6 +43,7 @@ const mln::Program& program() {
     p.add_predicate({"overlap", {kType_object, kType_object}, false, false, -1});
     p.add_predicate({"flatter", {kType_object, kType_object}, false, false, -1});
     p.add_predicate({"overhang", {kType_object}, false, false, -1});
+    p.add_predicate({"leaning", {kType_object}, false, false, -1});
     // higher_95b7: hard !higher(o, o)
     p.add_clause({"higher_95b7",
                   {{"o", kType_object, false}},
@@ -136,11 +138,11 @@ const mln::Program& program() {
                   {{"o", kType_object, false}},
                   {{kPred_stable, true, {mln::Term::var(0)}}, {kPred_table, false, {mln::Term::var(0)}}, {kPred_supported, false, {mln::Term::var(0)}}, {kPred_hidden, false, {mln::Term::var(0)}}, {kPred_falseEst, false, {mln::Term::var(0)}}},
                   kW_supported_hidden_falseest_af4c, false, "stable(o) ^ !table(o) => supported(o) v hidden(o) v falseEst(o)", {"domains/tabletop.ksm", 0}});
-    // falseest_b00b: intersect(a, b) ^ supported(b) ^ !supported(a) => falseEst(a)
-    p.add_clause({"falseest_b00b",
+    // falseest_ea5e: intersect(a, b) ^ supported(b) ^ !supported(a) ^ !leaning(a) => falseEst(a)
+    p.add_clause({"falseest_ea5e",
                   {{"a", kType_object, false}, {"b", kType_object, false}},
-                  {{kPred_intersect, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_supported, true, {mln::Term::var(1)}}, {kPred_supported, false, {mln::Term::var(0)}}, {kPred_falseEst, false, {mln::Term::var(0)}}},
-                  kW_falseest_b00b, false, "intersect(a, b) ^ supported(b) ^ !supported(a) => falseEst(a)", {"domains/tabletop.ksm", 0}});
+                  {{kPred_intersect, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_supported, true, {mln::Term::var(1)}}, {kPred_supported, false, {mln::Term::var(0)}}, {kPred_leaning, false, {mln::Term::var(0)}}, {kPred_falseEst, false, {mln::Term::var(0)}}},
+                  kW_falseest_ea5e, false, "intersect(a, b) ^ supported(b) ^ !supported(a) ^ !leaning(a) => falseEst(a)", {"domains/tabletop.ksm", 0}});
     // hidden_8a9f: !stable(o) => !hidden(o)
     p.add_clause({"hidden_8a9f",
                   {{"o", kType_object, false}},
@@ -166,6 +168,11 @@ const mln::Program& program() {
                   {{"o", kType_object, false}},
                   {{kPred_stable, true, {mln::Term::var(0)}}, {kPred_overhang, true, {mln::Term::var(0)}}, {kPred_falseEst, false, {mln::Term::var(0)}}, {kPred_hidden, false, {mln::Term::var(0)}}},
                   kW_falseest_hidden_ead4, false, "stable(o) ^ overhang(o) => falseEst(o) v hidden(o)", {"domains/tabletop.ksm", 0}});
+    // falseest_4cf5: leaning(o) => !falseEst(o)
+    p.add_clause({"falseest_4cf5",
+                  {{"o", kType_object, false}},
+                  {{kPred_leaning, true, {mln::Term::var(0)}}, {kPred_falseEst, true, {mln::Term::var(0)}}},
+                  kW_falseest_4cf5, false, "leaning(o) => !falseEst(o)", {"domains/tabletop.ksm", 0}});
     return p;
   }();
   return p;
@@ -468,20 +475,24 @@ void ground_supported_hidden_falseest_af4c(mln::FactorContext& g, std::int32_t c
   }
 }
 
-// falseest_b00b: intersect(a, b) ^ supported(b) ^ !supported(a) => falseEst(a)
-void ground_falseest_b00b(mln::FactorContext& g, std::int32_t clause) {
+// falseest_ea5e: intersect(a, b) ^ supported(b) ^ !supported(a) ^ !leaning(a) => falseEst(a)
+void ground_falseest_ea5e(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_object = g.size(kType_object);
   for (std::int32_t v_a = 0; v_a < n_object; ++v_a) {
+    if (g.ev(kPred_leaning, v_a)) {  // leaning(a)
+      g.satisfied(kW_falseest_ea5e, std::int64_t{n_object});
+      continue;
+    }
     for (std::int32_t v_b = 0; v_b < n_object; ++v_b) {
       if (!g.ev(kPred_intersect, std::int64_t{v_a} * n_object + v_b)) {  // !intersect(a, b)
-        g.satisfied(kW_falseest_b00b);
+        g.satisfied(kW_falseest_ea5e);
         continue;
       }
       g.begin();
-      if (g.query(kPred_supported, v_b, true)) { g.satisfied(kW_falseest_b00b); continue; }  // !supported(b)
-      if (g.query(kPred_supported, v_a, false)) { g.satisfied(kW_falseest_b00b); continue; }  // supported(a)
-      if (g.query(kPred_falseEst, v_a, false)) { g.satisfied(kW_falseest_b00b); continue; }  // falseEst(a)
-      g.soft(kW_falseest_b00b, clause);
+      if (g.query(kPred_supported, v_b, true)) { g.satisfied(kW_falseest_ea5e); continue; }  // !supported(b)
+      if (g.query(kPred_supported, v_a, false)) { g.satisfied(kW_falseest_ea5e); continue; }  // supported(a)
+      if (g.query(kPred_falseEst, v_a, false)) { g.satisfied(kW_falseest_ea5e); continue; }  // falseEst(a)
+      g.soft(kW_falseest_ea5e, clause);
     }
   }
 }
@@ -567,6 +578,20 @@ void ground_falseest_hidden_ead4(mln::FactorContext& g, std::int32_t clause) {
   }
 }
 
+// falseest_4cf5: leaning(o) => !falseEst(o)
+void ground_falseest_4cf5(mln::FactorContext& g, std::int32_t clause) {
+  const std::int32_t n_object = g.size(kType_object);
+  for (std::int32_t v_o = 0; v_o < n_object; ++v_o) {
+    if (!g.ev(kPred_leaning, v_o)) {  // !leaning(o)
+      g.satisfied(kW_falseest_4cf5);
+      continue;
+    }
+    g.begin();
+    if (g.query(kPred_falseEst, v_o, true)) { g.satisfied(kW_falseest_4cf5); continue; }  // !falseEst(o)
+    g.soft(kW_falseest_4cf5, clause);
+  }
+}
+
 }  // namespace
 
 mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) {
@@ -592,12 +617,13 @@ mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) 
   ground_falseest_a837(g, clause++);
   ground_supported_6fcc(g, clause++);
   ground_supported_hidden_falseest_af4c(g, clause++);
-  ground_falseest_b00b(g, clause++);
+  ground_falseest_ea5e(g, clause++);
   ground_hidden_8a9f(g, clause++);
   ground_falseest_317c(g, clause++);
   ground_hidden_5734(g, clause++);
   ground_falseest_cfb1(g, clause++);
   ground_falseest_hidden_ead4(g, clause++);
+  ground_falseest_4cf5(g, clause++);
   mln::fold_forced_atoms(grounding);
   return grounding;
 }

@@ -27,6 +27,7 @@ enum Pred : std::int32_t {
   kPred_overlap = 10,  // evidence overlap(object, object)
   kPred_flatter = 11,  // evidence flatter(object, object)
   kPred_overhang = 12,  // evidence overhang(object)
+  kPred_leaning = 13,  // evidence leaning(object)
 };
 
 // The clause program this file was generated from: names, weights, source locations.

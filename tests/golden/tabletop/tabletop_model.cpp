@@ -47,6 +47,10 @@ bool extract_flatter(const Scene& s, const std::int32_t* c) {
 bool extract_overhang(const Scene& s, const std::int32_t* c) {
   return blk::obb::overhang(s, c[0], 0.004, 0.005);
 }
+// extract leaning(o) = obb.leaning(o, tol = 10 deg, eps = 4 mm);
+bool extract_leaning(const Scene& s, const std::int32_t* c) {
+  return blk::obb::leaning(s, c[0], 0.17453292519943295, 0.004);
+}
 // extract table(o) = scene.is_table(o);
 bool extract_table(const Scene& s, const std::int32_t* c) {
   return blk::scene::is_table(s, c[0]);
@@ -66,6 +70,7 @@ blk::Binding make_binding() {
   b.extractors.push_back({kPred_overlap, &extract_overlap, "extract overlap(a, b) = obb.overlap(pose[a], size[a], pose[b], size[b], min_fraction = 0.5);"});
   b.extractors.push_back({kPred_flatter, &extract_flatter, "extract flatter(a, b) = obb.flatter(pose[a], size[a], pose[b], size[b], margin = 0.5 deg);"});
   b.extractors.push_back({kPred_overhang, &extract_overhang, "extract overhang(o) = obb.overhang(o, eps = 4 mm, margin = 5 mm);"});
+  b.extractors.push_back({kPred_leaning, &extract_leaning, "extract leaning(o) = obb.leaning(o, tol = 10 deg, eps = 4 mm);"});
   b.extractors.push_back({kPred_table, &extract_table, "extract table(o) = scene.is_table(o);"});
   b.priors.push_back(blk::mln());
   b.likelihood = blk::keypoints::gaussian(1.0, true, 5.0, 0.003, 0.026179938779914945, true);
