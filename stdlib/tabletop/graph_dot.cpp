@@ -38,9 +38,9 @@ std::string graph_dot(const TabletopResult& r) {
     out += fmt::format("  {} [label={}, fillcolor=\"{}\"];\n", quote(o.id),
                        "\"" + escape(o.id) + fmt::format("\\nfalse {:.3f}  hidden {:.3f}\"", p.false_prob, p.hidden_prob), fill);
   }
-  for (const auto& [upper, lower] : support_edges(r.evidence))
+  for (const auto& [upper, lower] : support_edges(r))
     out += fmt::format("  {} -> {};\n", quote(lower), quote(upper));
-  for (const auto& [a, b] : unstable_contact_edges(r.evidence))
+  for (const auto& [a, b] : unstable_contact_edges(r))
     out += fmt::format("  {} -> {} [dir=none, style=dashed, constraint=false];\n", quote(a), quote(b));
   out += "}\n";
   return out;

@@ -43,6 +43,27 @@ std::vector<Edge> unstable_contact_edges(const Evidence& ev) {
   return out;
 }
 
+namespace {
+
+// The edges of `all` whose ends are both not decided false.
+std::vector<Edge> without_false(const TabletopResult& r, std::vector<Edge> all) {
+  if (r.probabilities.empty()) return all;
+  auto is_false = [&](const std::string& id) {
+    const int i = r.scene.find(id);
+    return i >= 0 && decide(r.probabilities.at(static_cast<std::size_t>(i)).false_prob).value_or(false);
+  };
+  std::erase_if(all, [&](const Edge& e) { return is_false(e.first) || is_false(e.second); });
+  return all;
+}
+
+}  // namespace
+
+std::vector<Edge> support_edges(const TabletopResult& r) { return without_false(r, support_edges(r.evidence)); }
+
+std::vector<Edge> unstable_contact_edges(const TabletopResult& r) {
+  return without_false(r, unstable_contact_edges(r.evidence));
+}
+
 void validate_result(const TabletopResult& r) {
   const std::size_t n = r.scene.objects.size();
   if (!r.probabilities.empty() && r.probabilities.size() != n)
@@ -91,9 +112,9 @@ nlohmann::json scene_graph_json(const TabletopResult& r) {
     objects.push_back(std::move(entry));
   }
   json support = json::array();
-  for (const auto& [u, l] : support_edges(r.evidence)) support.push_back({id_json(r.scene, u), id_json(r.scene, l)});
+  for (const auto& [u, l] : support_edges(r)) support.push_back({id_json(r.scene, u), id_json(r.scene, l)});
   json contact = json::array();
-  for (const auto& [a, b] : unstable_contact_edges(r.evidence))
+  for (const auto& [a, b] : unstable_contact_edges(r))
     contact.push_back({id_json(r.scene, a), id_json(r.scene, b)});
   return json{{"objects", objects}, {"support", support}, {"contact", contact}};
 }

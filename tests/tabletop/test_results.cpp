@@ -60,8 +60,17 @@ TEST_CASE("scene_graph.json content", "[results]") {
           Approx(input["objects"][0]["pose"]["t"][k].get<double>()).margin(1e-8));
   const auto support = nlohmann::json::parse(R"([["0","table"],["1","table"],["2","table"],["3","table"],["4","3"]])");
   CHECK(j["support"] == support);
-  const auto contact = nlohmann::json::parse(R"([["6","table"]])");
-  CHECK(j["contact"] == contact);
+  // 6 touches the table, but it is decided false (0.91): a false estimate is no body, so the
+  // scene graph has no edge of it. Undecided, it keeps its edge.
+  CHECK(j["contact"] == nlohmann::json::array());
+  CHECK(unstable_contact_edges(r.evidence) == std::vector<Edge>{{"6", "table"}});  // the evidence has it
+  TabletopResult undecided = r;
+  undecided.probabilities[6].false_prob = 0.5;
+  CHECK(scene_graph_json(undecided)["contact"] == nlohmann::json::parse(R"([["6","table"]])"));
+  // 3 decided false: it neither rests on the table nor carries 4.
+  TabletopResult three = r;
+  three.probabilities[3].false_prob = 0.7;
+  CHECK(scene_graph_json(three)["support"] == nlohmann::json::parse(R"([["0","table"],["1","table"],["2","table"]])"));
   TabletopResult bad = r;
   bad.probabilities.pop_back();
   CHECK_THROWS_AS(scene_graph_json(bad), std::invalid_argument);
@@ -70,11 +79,14 @@ TEST_CASE("scene_graph.json content", "[results]") {
   CHECK_THROWS_WITH(scene_graph_json(bad), Catch::Contains("object \"2\": probability 1.5"));
 }
 
-TEST_CASE("graph.dot draws support arrows and dashed contacts", "[results]") {
+TEST_CASE("graph.dot draws support arrows and dashed contacts, none of a false estimate", "[results]") {
   const std::string dot = graph_dot(seed_result());
   CHECK(dot.find("\"3\" -> \"4\";") != std::string::npos);          // 3 supports 4
   CHECK(dot.find("\"table\" -> \"0\";") != std::string::npos);
-  CHECK(dot.find("\"6\" -> \"table\" [dir=none, style=dashed, constraint=false];") != std::string::npos);
+  CHECK(dot.find("\"6\" -> \"table\"") == std::string::npos);  // 6 is decided false: no edge of it
+  TabletopResult undecided = seed_result();
+  undecided.probabilities[6].false_prob = 0.5;
+  CHECK(graph_dot(undecided).find("\"6\" -> \"table\" [dir=none, style=dashed, constraint=false];") != std::string::npos);
   CHECK(dot.find("\"6\" [label=\"6\\nfalse 0.910  hidden 0.460\", fillcolor=\"#ff6666\"]") != std::string::npos);
   CHECK(dot.find("\"5\" [label=\"5\\nfalse 0.200  hidden 0.800\", fillcolor=\"#66ffff\"]") != std::string::npos);
 }

@@ -95,10 +95,10 @@ inline void score(const tt::TabletopResult& r, const nlohmann::json& truth, Scor
       if (!predicted.count(e)) c.add(false, true);
   };
   std::set<std::pair<std::string, std::string>> predicted, truth_edges, predicted_contact, truth_contact;
-  for (const auto& e : tt::support_edges(r.evidence)) predicted.insert(e);
+  for (const auto& e : tt::support_edges(r)) predicted.insert(e);
   for (const auto& e : truth.at("support")) truth_edges.insert({truth_id(e.at(0)), truth_id(e.at(1))});
   add_edges(predicted, truth_edges, s.support);
-  for (const auto& e : tt::unstable_contact_edges(r.evidence)) predicted_contact.insert(unordered(e.first, e.second));
+  for (const auto& e : tt::unstable_contact_edges(r)) predicted_contact.insert(unordered(e.first, e.second));
   if (truth.contains("contact"))
     for (const auto& e : truth.at("contact")) truth_contact.insert(unordered(truth_id(e.at(0)), truth_id(e.at(1))));
   add_edges(predicted_contact, truth_contact, s.contact);

@@ -101,7 +101,7 @@ TEST_CASE("HOPE video frame: nothing false or hidden, everything on the table") 
   for (const auto& [label, binding] : {std::pair<const char*, const blk::Binding*>{"seed values", &seed_binding()},
                                        std::pair<const char*, const blk::Binding*>{"domains/tabletop.ksm", &ksm_binding()}}) {
     const tt::TabletopResult r = run_kit(*binding, scene, 500, 1);
-    const auto sup = tt::support_edges(r.evidence);
+    const auto sup = tt::support_edges(r);
     int reported_false = 0, reported_hidden = 0, on_table = 0;
     for (std::size_t i = 0; i < r.scene.objects.size(); ++i) {
       reported_false += tt::decide(r.probabilities[i].false_prob).value_or(false);
