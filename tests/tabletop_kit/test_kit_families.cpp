@@ -88,7 +88,7 @@ const Floor kFloors[] = {
     // keypoints, false_kinds: undecided floors raised with the pose-estimate term (KitOptions::
     // pose_sigma_*): at 300 iterations one more object each sits in [0.4, 0.6] while false F1
     // rises (0.86 -> 0.92, 0.70 -> 0.72); at the binary's 2000 iterations 3.0 % and 11.9 %
-    // (docs/tabletop_families.md, "Iterations and the pose estimate").
+    // (docs/tabletop_families/iterations_and_estimate.md).
     {"keypoints", 0.95, 0.90, 0.95, 5.0},  // measured 0.98 / 0.99 / 1.00, 1.5 %
     {"catalogue", 0.88, 0.90, 0.95, 12.4},  // measured 0.91 / 0.93 / 0.97, 9.4 %
     {"false_kinds", 0.68, 0.90, 0.92, 14.9},  // measured 0.71 / 0.91 / 0.945, 11.9 %

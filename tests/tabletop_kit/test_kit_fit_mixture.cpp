@@ -2,8 +2,8 @@
 // (fit_kernel.h): the mixture's exact density, draws from both
 // parts, its refusal without a pose-estimate term, and the state it exists for: a real box
 // whose noisy estimate sinks 28 mm into the table, where the refine move alone stays
-// (pose_noise family, batch seed 2027, scene 5, box_9; docs/tabletop_families.md,
-// "Poses the refine move cannot reach").
+// (pose_noise family, batch seed 2027, scene 5, box_9;
+// docs/tabletop_families/fit_kernel.md).
 #include <catch2/catch.hpp>
 
 #include <cmath>
