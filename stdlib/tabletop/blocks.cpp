@@ -1,6 +1,8 @@
 #include "stdlib/tabletop/blocks.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <vector>
 
 #include "stdlib/tabletop/extract_contact.h"
@@ -46,6 +48,23 @@ EvidenceParams intersect_params(double eps) {
   p.intersect_eps = eps;
   p.vertical_intersect_eps = std::max(kDefaults.vertical_intersect_eps, eps);
   return p;
+}
+
+// How far body o's lowest point lies from the top of the nearest body it rests on: the
+// bodies it touches within eps (blocks.h: touching) and is `higher` than, the table
+// included, but not one it cuts into from the side. Infinity when it rests on none.
+double seat_gap(const Scene& s, std::int32_t o, double eps) {
+  double best = std::numeric_limits<double>::infinity();
+  const Obb& box = s.box(o);
+  const EvidenceParams p = contact_params(s, eps);
+  for (std::size_t j = 0; j < s.bodies(); ++j) {
+    const auto b = static_cast<std::int32_t>(j);
+    if (b == o || !touching(s, o, b, eps) || !extract_higher(box, s.box(b), kDefaults)) continue;
+    const PairGeometry& g = s.pair(o, b, std::max(p.max_contact_eps(), kDefaults.max_contact_eps()));
+    if (g.overlapping && !(g.stacked && is_near_vertical(g.direction, p))) continue;  // a side cut
+    best = std::min(best, std::abs(box.min_z() - s.box(b).max_z()));
+  }
+  return best;
 }
 
 }  // namespace
@@ -133,6 +152,13 @@ bool leaning(const Scene& s, std::int32_t o, double tol, double eps) {
     }
   }
   return base && held;
+}
+
+bool snugger(const Scene& s, std::int32_t a, std::int32_t b, double eps, double margin) {
+  if (a == b || s.is_table(a) || s.is_table(b)) return false;
+  s.note_hover_tolerance(eps);  // touching_row then tracks the bodies this atom reads
+  const double gap_a = seat_gap(s, a, eps), gap_b = seat_gap(s, b, eps);
+  return std::isfinite(gap_b) && gap_a + margin * s.gap_sigma() < gap_b;
 }
 
 }  // namespace obb

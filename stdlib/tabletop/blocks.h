@@ -94,6 +94,12 @@ bool overhang(const Scene& s, std::int32_t o, double eps, double margin);
 // to (the side of its centre from its lowest vertex). It reads the bodies o touches, like
 // overhang.
 bool leaning(const Scene& s, std::int32_t o, double tol, double eps);
+// Constant a sits on what it rests on more snugly than b does: the gap between a's lowest
+// point and the top of the nearest body it rests on (the bodies it touches within eps [m]
+// and is `higher` than, the table included) is smaller than b's by more than margin times
+// the scene's gap noise (Scene::gap_sigma). False when either rests on no visible body (it
+// may rest on a hidden one). It reads the bodies a and b touch, like overhang.
+bool snugger(const Scene& s, std::int32_t a, std::int32_t b, double eps, double margin);
 }  // namespace obb
 
 namespace scene {

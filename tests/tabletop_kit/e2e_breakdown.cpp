@@ -9,6 +9,8 @@
 // its box at the truth, the input, the fit and the reported state; with KSMC_TTKIT_LL=1 also
 // its likelihood at those poses and the prior with the object moved to its fit.
 // KSMC_TTKIT_LEANING=1 counts the objects with obb.leaning evidence (r25) at the input poses, by truth.
+// KSMC_TTKIT_PAIRS=1 tallies the pairs of intersecting objects that both rest on a face at the
+// input poses, by truth, and which of the two is snugger (obb.snugger, r26).
 // With KSMC_TTKIT_FAMILY=<family> the scenes are that noise-model family's (tools/tabletop_families,
 // batch seed 2027, as tabletop_family_eval draws them; KSMC_TTKIT_SEED=<seed> another batch).
 //
@@ -93,6 +95,7 @@ int main(int argc, char** argv) {
   long err_count = 0;
   std::map<std::string, int> categories;
   std::map<std::string, std::pair<int, int>> leaning;  // truth class -> (objects, leaning at the input)
+  std::map<std::string, int> pairs;                    // "truth: snugger verdict" -> pairs
   for (int i = 0; i < n_scenes; ++i) {
     const char* family = std::getenv("KSMC_TTKIT_FAMILY");
     namespace tf = ksmc::tools::tabletop_families;
@@ -152,6 +155,29 @@ int main(int argc, char** argv) {
         lean += blk::obb::leaning(bs, body, 10.0 / 57.29577951308232, 0.004) ? 1 : 0;
       }
     }
+    if (std::getenv("KSMC_TTKIT_PAIRS")) {  // obb.snugger (r26) at the input poses, by truth
+      const blk::Scene bs(*scene);
+      const tt::Evidence& ev = r0.evidence;
+      for (std::size_t ka = 0; ka < g.objects.size(); ++ka)
+        for (std::size_t kb = ka + 1; kb < g.objects.size(); ++kb) {
+          const auto ia = static_cast<std::size_t>(r.scene.find(g.objects[ka].id));
+          const auto ib = static_cast<std::size_t>(r.scene.find(g.objects[kb].id));
+          const auto a = tt::Evidence::body(ia), b = tt::Evidence::body(ib);
+          if (!ev.intersect[a][b] || !ev.stable[a] || !ev.stable[b]) continue;
+          const bool fa = g.objects[ka].false_kind != sim::FalseKind::none;
+          const bool fb = g.objects[kb].false_kind != sim::FalseKind::none;
+          const auto ba = static_cast<std::int32_t>(a), bb = static_cast<std::int32_t>(b);
+          const bool ab = blk::obb::snugger(bs, ba, bb, 0.004, 1.0), ba_ = blk::obb::snugger(bs, bb, ba, 0.004, 1.0);
+          std::string cls, verdict = ab || ba_ ? "one is snugger" : "neither is snugger";
+          if (fa != fb) {
+            cls = "one real, one false";
+            if (ab || ba_) verdict = (ab ? !fa : !fb) ? "the real one is snugger" : "the false one is snugger";
+          } else {
+            cls = fa ? "both false" : "both real";
+          }
+          ++pairs[cls + ": " + verdict];
+        }
+    }
     for (const auto& o : g.objects) {  // pose errors of real objects, input and reported state
       if (o.false_kind != sim::FalseKind::none) continue;
       const int idx = r.scene.find(o.id);
@@ -193,5 +219,7 @@ int main(int argc, char** argv) {
   for (const auto& [c, n] : categories) std::cout << fmt::format("  {:4} {}\n", n, c);
   if (!leaning.empty()) std::cout << "\nleaning at the input poses (KSMC_TTKIT_LEANING):\n";
   for (const auto& [c, v] : leaning) std::cout << fmt::format("  {:4} of {:4} {}\n", v.second, v.first, c);
+  if (!pairs.empty()) std::cout << "\nintersecting pairs resting on a face, at the input poses (KSMC_TTKIT_PAIRS):\n";
+  for (const auto& [c, n] : pairs) std::cout << fmt::format("  {:4} {}\n", n, c);
   return 0;
 }

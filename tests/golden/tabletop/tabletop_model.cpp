@@ -51,6 +51,10 @@ bool extract_overhang(const Scene& s, const std::int32_t* c) {
 bool extract_leaning(const Scene& s, const std::int32_t* c) {
   return blk::obb::leaning(s, c[0], 0.17453292519943295, 0.004);
 }
+// extract snugger(a, b) = obb.snugger(a, b, eps = 4 mm, margin = 1);
+bool extract_snugger(const Scene& s, const std::int32_t* c) {
+  return blk::obb::snugger(s, c[0], c[1], 0.004, 1.0);
+}
 // extract table(o) = scene.is_table(o);
 bool extract_table(const Scene& s, const std::int32_t* c) {
   return blk::scene::is_table(s, c[0]);
@@ -71,6 +75,7 @@ blk::Binding make_binding() {
   b.extractors.push_back({kPred_flatter, &extract_flatter, "extract flatter(a, b) = obb.flatter(pose[a], size[a], pose[b], size[b], margin = 0.5 deg);"});
   b.extractors.push_back({kPred_overhang, &extract_overhang, "extract overhang(o) = obb.overhang(o, eps = 4 mm, margin = 5 mm);"});
   b.extractors.push_back({kPred_leaning, &extract_leaning, "extract leaning(o) = obb.leaning(o, tol = 10 deg, eps = 4 mm);"});
+  b.extractors.push_back({kPred_snugger, &extract_snugger, "extract snugger(a, b) = obb.snugger(a, b, eps = 4 mm, margin = 1);"});
   b.extractors.push_back({kPred_table, &extract_table, "extract table(o) = scene.is_table(o);"});
   b.priors.push_back(blk::mln());
   b.likelihood = blk::keypoints::gaussian(1.0, true, 5.0, 0.003, 0.026179938779914945, true);
