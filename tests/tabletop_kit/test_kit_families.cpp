@@ -82,19 +82,22 @@ struct Floor {
   double false_f1, hidden_f1, support_f1, undecided_pct;
 };
 const Floor kFloors[] = {
-    {"base", 0.91, 0.90, 0.95, 11.9},  // measured 0.94 / 0.95 / 0.99, 8.9 %
-    {"pose_noise", 0.84, 0.90, 0.95, 8.4},  // measured 0.87 / 0.94 / 0.98, 5.4 %
-    {"camera", 0.95, 0.90, 0.95, 8.6},  // measured 0.954 / 0.98 / 0.99, 5.6 %
+    {"base", 0.92, 0.90, 0.95, 11.9},  // measured 0.949 / 0.95 / 0.99, 8.9 %
+    {"pose_noise", 0.90, 0.90, 0.95, 9.8},  // measured 0.935 / 0.93 / 0.99, 6.8 %
+    {"camera", 0.95, 0.90, 0.95, 6.4},  // measured 0.97 / 0.98 / 1.00, 3.4 %
     // keypoints, false_kinds: undecided floors raised with the pose-estimate term (KitOptions::
     // pose_sigma_*): at 300 iterations one more object each sits in [0.4, 0.6] while false F1
     // rises (0.86 -> 0.92, 0.70 -> 0.72); at the binary's 2000 iterations 3.0 % and 11.9 %
     // (docs/tabletop_families/iterations_and_estimate.md).
-    {"keypoints", 0.95, 0.90, 0.95, 5.0},  // measured 0.98 / 0.99 / 1.00, 1.5 %
+    // pose_noise, mixed: with r26 (snugger) at 300 iterations undecided rose 5.4 -> 6.8 % and
+    // 6.9 -> 8.3 %, at 2000 iterations it fell (5.4 -> 4.1 %) and rose (9.7 -> 11.1 %)
+    // (docs/tabletop_families/snugger_r26.md).
+    {"keypoints", 0.95, 0.90, 0.95, 5.0},  // measured 0.98 / 0.97 / 1.00, 3.0 %
     {"catalogue", 0.88, 0.90, 0.95, 12.4},  // measured 0.91 / 0.93 / 0.97, 9.4 %
-    {"false_kinds", 0.68, 0.90, 0.92, 14.9},  // measured 0.71 / 0.91 / 0.945, 11.9 %
+    {"false_kinds", 0.68, 0.90, 0.92, 13.2},  // measured 0.71 / 0.91 / 0.95, 10.2 %
     {"hidden", 0.80, 0.90, 0.95, 5.0},  // measured 0.83 / 0.98 / 0.98, 3.1 %
     {"leaning", 0.95, 0.90, 0.95, 5.0},  // measured 1.00 / 0.99 / 0.99, 1.1 %
-    {"mixed", 0.83, 0.84, 0.95, 9.9},  // measured 0.86 / 0.87 / 0.97, 6.9 %
+    {"mixed", 0.81, 0.84, 0.95, 11.3},  // measured 0.836 / 0.87 / 0.97, 8.3 %
 };
 
 TEST_CASE("families: kit accuracy per family") {
