@@ -16,6 +16,8 @@ Scene::Scene(tabletop::Scene input) : input_(std::move(input)) {
   box_valid_.assign(n, 0);
   pairs_.assign(n * n, PairSlot{});
   fits_.resize(n);
+  memo_.assign(n, 0.0);
+  memo_valid_.assign(n, 0);
   for (const auto& o : input_.objects) input_poses_.push_back(o.pose);
   const EvidenceParams defaults;
   const GapNoise noise = gap_noise(input_, defaults.stable_tol_rad);
@@ -100,6 +102,7 @@ void Scene::set_pose(std::int32_t c, const Pose& pose) {
   }
   input_.objects[i - 1].pose = pose;
   box_valid_[i] = 0;
+  std::fill(memo_valid_.begin(), memo_valid_.end(), 0);
 }
 
 void Scene::undo() {
@@ -110,6 +113,23 @@ void Scene::undo() {
   box_valid_[i] = undo_.box_valid;
   for (std::size_t j = 0; j < bodies(); ++j) pairs_[slot(undo_.body, static_cast<std::int32_t>(j))] = undo_.row[j];
   undo_.active = false;
+  std::fill(memo_valid_.begin(), memo_valid_.end(), 0);
+}
+
+std::optional<double> Scene::memo(std::int32_t c, double key) const {
+  const auto i = static_cast<std::size_t>(c);
+  if (key != memo_key_ || !memo_valid_.at(i)) return std::nullopt;
+  return memo_[i];
+}
+
+void Scene::set_memo(std::int32_t c, double key, double value) const {
+  if (key != memo_key_) {
+    memo_key_ = key;
+    std::fill(memo_valid_.begin(), memo_valid_.end(), 0);
+  }
+  const auto i = static_cast<std::size_t>(c);
+  memo_.at(i) = value;
+  memo_valid_[i] = 1;
 }
 
 void Scene::note_hover_tolerance(double eps) const {

@@ -78,6 +78,13 @@ class Scene {
   void commit() { undo_.active = false; }
   void undo();
 
+  // A per-body value a block derives from body c and the bodies around it, under `key` (its
+  // tolerance), kept until the next set_pose or undo: one move's extraction then computes it
+  // once per body, not once per atom that reads it (blocks.cpp: seat_gap). Empty when not
+  // known for this key.
+  std::optional<double> memo(std::int32_t c, double key) const;
+  void set_memo(std::int32_t c, double key, double value) const;
+
   // Tolerances the hover block was evaluated with (the kit re-evaluates hover atoms of bodies
   // whose touching status with a moved body changes; blocks.h: touching).
   const std::vector<double>& hover_tolerances() const noexcept { return hover_eps_; }
@@ -105,6 +112,9 @@ class Scene {
   mutable std::vector<char> box_valid_;
   mutable std::vector<PairSlot> pairs_;  // [min][max], n x n
   mutable std::vector<double> hover_eps_;
+  mutable double memo_key_ = 0.0;
+  mutable std::vector<double> memo_;
+  mutable std::vector<char> memo_valid_;
   mutable EvidenceParams params_;
   struct Undo {
     bool active = false;

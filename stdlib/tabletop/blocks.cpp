@@ -54,6 +54,7 @@ EvidenceParams intersect_params(double eps) {
 // bodies it touches within eps (blocks.h: touching) and is `higher` than, the table
 // included, but not one it cuts into from the side. Infinity when it rests on none.
 double seat_gap(const Scene& s, std::int32_t o, double eps) {
+  if (const std::optional<double> known = s.memo(o, eps)) return *known;
   double best = std::numeric_limits<double>::infinity();
   const Obb& box = s.box(o);
   const EvidenceParams p = contact_params(s, eps);
@@ -64,6 +65,7 @@ double seat_gap(const Scene& s, std::int32_t o, double eps) {
     if (g.overlapping && !(g.stacked && is_near_vertical(g.direction, p))) continue;  // a side cut
     best = std::min(best, std::abs(box.min_z() - s.box(b).max_z()));
   }
+  s.set_memo(o, eps, best);
   return best;
 }
 

@@ -78,3 +78,19 @@ TEST_CASE("snugger: a box cut into from the side is no seat", "[geometry]") {
   CHECK_FALSE(snugger(input, 1, 2));
   CHECK_FALSE(snugger(input, 2, 1));
 }
+
+TEST_CASE("snugger: a move and its undo are seen (the per-body seat gaps are not kept across them)", "[geometry]") {
+  Scene input;
+  input.objects = {cube("a", 0.0, 0.001), cube("b", 0.08, 0.011)};
+  blocks::Scene s(input);
+  CHECK(blocks::obb::snugger(s, 1, 2, kEps, kMargin));
+  Pose lowered = input.objects[1].pose;
+  lowered.t.z() -= 0.01;  // b down to 1 mm above the table
+  s.set_pose(2, lowered);
+  CHECK_FALSE(blocks::obb::snugger(s, 1, 2, kEps, kMargin));
+  s.undo();
+  CHECK(blocks::obb::snugger(s, 1, 2, kEps, kMargin));
+  s.set_pose(2, lowered);
+  s.commit();
+  CHECK_FALSE(blocks::obb::snugger(s, 1, 2, kEps, kMargin));
+}
