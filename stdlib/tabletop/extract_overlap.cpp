@@ -1,5 +1,9 @@
 #include "stdlib/tabletop/extract_overlap.h"
 
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
 #include "stdlib/tabletop/extract_stable.h"
 
 namespace ksmc::stdlib::tabletop {
@@ -13,6 +17,26 @@ Obb shrunk(Obb box, double by) {
   return box;
 }
 
+// The grid indices [first, last] along the small box's axis k whose cells can lie inside
+// `large`: a point inside `large` projects onto any axis within large's extent along it, so a
+// cell whose coordinate along the axis falls outside that extent is outside `large` (a
+// necessary condition only; the cells kept are still tested one by one). first > last: none.
+std::pair<int, int> cell_range(const Obb& small, const Obb& large, int k) {
+  const Eigen::Vector3d u = small.axes.col(k);
+  double reach = 0.0;
+  for (int m = 0; m < 3; ++m) reach += large.half[m] * std::abs(large.axes.col(m).dot(u));
+  reach += 1e-9;  // rounding: never drop a cell `contains` would accept
+  const double offset = (small.center - large.center).dot(u);
+  int first = kGrid, last = -1;
+  for (int i = 0; i < kGrid; ++i) {
+    const double x = offset + ((2.0 * i + 1.0) / kGrid - 1.0) * small.half[k];
+    if (std::abs(x) > reach) continue;
+    first = std::min(first, i);
+    last = i;
+  }
+  return {first, last};
+}
+
 }  // namespace
 
 double shared_volume_fraction(const Obb& a, const Obb& b, double shrink) {
@@ -24,10 +48,13 @@ double shared_volume_fraction(const Obb& a, const Obb& b, double shrink) {
   const bool a_smaller = sa.half.prod() <= sb.half.prod();
   const Obb& small = a_smaller ? sa : sb;
   const Obb& large = a_smaller ? sb : sa;
+  const auto [i0, i1] = cell_range(small, large, 0);
+  const auto [j0, j1] = cell_range(small, large, 1);
+  const auto [k0, k1] = cell_range(small, large, 2);
   int inside = 0;
-  for (int i = 0; i < kGrid; ++i) {
-    for (int j = 0; j < kGrid; ++j) {
-      for (int k = 0; k < kGrid; ++k) {
+  for (int i = i0; i <= i1; ++i) {
+    for (int j = j0; j <= j1; ++j) {
+      for (int k = k0; k <= k1; ++k) {
         const Eigen::Vector3d cell((2.0 * i + 1.0) / kGrid - 1.0, (2.0 * j + 1.0) / kGrid - 1.0,
                                    (2.0 * k + 1.0) / kGrid - 1.0);
         if (large.contains(small.center + small.axes * cell.cwiseProduct(small.half))) ++inside;
