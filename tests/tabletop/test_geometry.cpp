@@ -287,6 +287,39 @@ TEST_CASE("vertical tolerances apply to stacking only, not to a thin box pushed 
   CHECK_FALSE(extract_contact(side, big, kParams));
 }
 
+TEST_CASE("overlap: the cells skipped as outside the larger box change no count", "[geometry]") {
+  // shared_volume_fraction samples an 8 x 8 x 8 grid of the smaller box and tests only the
+  // cells whose coordinates along its axes lie within the larger box's extent along them. The
+  // same count over every cell, here, for random pairs of boxes cutting each other:
+  auto every_cell = [](const Obb& a, const Obb& b) {
+    const Obb& small = a.half.prod() <= b.half.prod() ? a : b;
+    const Obb& large = &small == &a ? b : a;
+    int inside = 0;
+    for (int i = 0; i < 8; ++i)
+      for (int j = 0; j < 8; ++j)
+        for (int k = 0; k < 8; ++k) {
+          const Vector3d cell((2.0 * i + 1.0) / 8 - 1.0, (2.0 * j + 1.0) / 8 - 1.0, (2.0 * k + 1.0) / 8 - 1.0);
+          inside += large.contains(small.center + small.axes * cell.cwiseProduct(small.half)) ? 1 : 0;
+        }
+    return inside / 512.0;
+  };
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int partial = 0;
+  for (int n = 0; n < 400; ++n) {
+    const Vector3d size_a(0.02 + 0.1 * std::abs(u(rng)), 0.02 + 0.1 * std::abs(u(rng)), 0.02 + 0.1 * std::abs(u(rng)));
+    const Vector3d size_b(0.02 + 0.1 * std::abs(u(rng)), 0.02 + 0.1 * std::abs(u(rng)), 0.02 + 0.1 * std::abs(u(rng)));
+    const Obb a = box(Vector3d(0, 0, 0.1), size_a, rot(90.0 * u(rng), Vector3d(u(rng), u(rng), u(rng))));
+    const Obb b = box(Vector3d(0.06 * u(rng), 0.06 * u(rng), 0.1 + 0.06 * u(rng)), size_b,
+                      rot(90.0 * u(rng), Vector3d(u(rng), u(rng), u(rng))));
+    const double f = shared_volume_fraction(a, b, 0.0);
+    INFO(n);
+    CHECK(f == every_cell(a, b));
+    partial += f > 0.0 && f < 1.0;
+  }
+  CHECK(partial > 100);  // most pairs cut each other in part
+}
+
 TEST_CASE("overlap: shared share of the smaller box, shrunk by the noise; flatter by tilt", "[geometry]") {
   const Obb a = cube_on_table();
   CHECK(shared_volume_fraction(a, a, 0.0) == Approx(1.0));
