@@ -50,9 +50,15 @@ EvidenceParams intersect_params(double eps) {
   return p;
 }
 
-// How far body o's lowest point lies from the top of the nearest body it rests on: the
-// bodies it touches within eps (blocks.h: touching) and is `higher` than, the table
-// included, but not one it cuts into from the side. Infinity when it rests on none.
+// Body o rests on body b: it touches b within eps (blocks.h: touching) and lies `higher`
+// than b. The supporters overhang and snugger read.
+bool rests_on(const Scene& s, std::int32_t o, std::int32_t b, double eps) {
+  return b != o && touching(s, o, b, eps) && extract_higher(s.box(o), s.box(b), kDefaults);
+}
+
+// How far body o's lowest point lies from the top of the nearest body it rests on
+// (rests_on, the table included), but not one it cuts into from the side. Infinity when it
+// rests on none.
 double seat_gap(const Scene& s, std::int32_t o, double eps) {
   if (const std::optional<double> known = s.memo(o, eps)) return *known;
   double best = std::numeric_limits<double>::infinity();
@@ -60,7 +66,7 @@ double seat_gap(const Scene& s, std::int32_t o, double eps) {
   const EvidenceParams p = contact_params(s, eps);
   for (std::size_t j = 0; j < s.bodies(); ++j) {
     const auto b = static_cast<std::int32_t>(j);
-    if (b == o || !touching(s, o, b, eps) || !extract_higher(box, s.box(b), kDefaults)) continue;
+    if (!rests_on(s, o, b, eps)) continue;
     const PairGeometry& g = s.pair(o, b, std::max(p.max_contact_eps(), kDefaults.max_contact_eps()));
     if (g.overlapping && !(g.stacked && is_near_vertical(g.direction, p))) continue;  // a side cut
     best = std::min(best, std::abs(box.min_z() - s.box(b).max_z()));
@@ -123,7 +129,7 @@ bool overhang(const Scene& s, std::int32_t o, double eps, double margin) {
   std::vector<Obb> supporters;
   for (std::size_t j = 0; j < s.bodies(); ++j) {
     const auto b = static_cast<std::int32_t>(j);
-    if (b == o || !touching(s, o, b, eps) || !extract_higher(s.box(o), s.box(b), kDefaults)) continue;
+    if (!rests_on(s, o, b, eps)) continue;
     if (s.is_table(b)) return false;  // resting on the table: nothing to overhang
     supporters.push_back(s.box(b));
   }
