@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -62,6 +63,45 @@ inline void add_visible_box(pc::Points& pts, const Eigen::Isometry3d& pose, cons
     if (noise > 0.0) p += Eigen::Vector3d(n(rng), n(rng), n(rng)) * noise;
     pts.push_back(p);
   });
+}
+
+// A depth view by ray casting: rays from `sensor` through a grid of `step` radians around
+// the direction to `target` (half-width `fov` radians), each keeping its nearest hit among
+// the boxes (pose, size) and the table top z = 0 (|x| <= hx, |y| <= hy). Occlusion included.
+struct CastBox {
+  Eigen::Isometry3d pose;
+  Eigen::Vector3d size;
+};
+inline pc::Points cast_view(const Eigen::Vector3d& sensor, const Eigen::Vector3d& target, double fov, double step,
+                            const std::vector<CastBox>& boxes, double hx, double hy) {
+  const Eigen::Vector3d f = (target - sensor).normalized();
+  const Eigen::Vector3d right = f.cross(Eigen::Vector3d::UnitZ()).normalized();
+  const Eigen::Vector3d up = right.cross(f);
+  pc::Points out;
+  for (double a = -fov; a <= fov; a += step)
+    for (double b = -fov; b <= fov; b += step) {
+      const Eigen::Vector3d d = (f + std::tan(a) * right + std::tan(b) * up).normalized();
+      double best = d.z() < 0.0 ? -sensor.z() / d.z() : 1e9;
+      const Eigen::Vector3d on_table = sensor + best * d;
+      if (std::abs(on_table.x()) > hx || std::abs(on_table.y()) > hy) best = 1e9;
+      for (const CastBox& box : boxes) {
+        const Eigen::Vector3d o = box.pose.inverse() * sensor, l = box.pose.linear().transpose() * d;
+        double enter = 0.0, leave = 1e9;
+        for (int k = 0; k < 3; ++k) {
+          if (std::abs(l[k]) < 1e-12) {
+            if (std::abs(o[k]) > 0.5 * box.size[k]) leave = -1.0;
+            continue;
+          }
+          double s0 = (-0.5 * box.size[k] - o[k]) / l[k], s1 = (0.5 * box.size[k] - o[k]) / l[k];
+          if (s0 > s1) std::swap(s0, s1);
+          enter = std::max(enter, s0);
+          leave = std::min(leave, s1);
+        }
+        if (enter <= leave && enter < best) best = enter;
+      }
+      if (best < 1e9) out.push_back(sensor + best * d);
+    }
+  return out;
 }
 
 // Maps table-frame points into a tilted "camera" frame, so the front end must find the plane.

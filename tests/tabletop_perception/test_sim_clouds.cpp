@@ -1,5 +1,5 @@
-// Simulated depth clouds of generated scenes (singles and propped families): sizes and
-// poses recovered.
+// Simulated depth clouds of generated scenes (singles, propped and stacks families): sizes
+// and poses recovered.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -10,6 +10,24 @@
 using namespace ksmc::stdlib::tabletop::perception;
 using namespace ksmc::tools::perception_sim;
 
+namespace {
+// The front end on a simulated frame with `opt` (the frame's camera set), scored in the
+// camera frame; `within` counts the true boxes found within 1 cm / 3 degrees / 1 cm.
+struct Scored {
+  std::vector<ObjectError> objects;
+  int within = 0;
+};
+Scored front_end(const SimFrame& f, CloudOptions opt = {}) {
+  opt.camera = scene_camera(f.scene.camera);
+  const CloudScene cs = scene_from_points(f.cloud, "sim", opt);
+  Scored out{evaluate_same_frame(camera_frame_boxes(cs.scene), f.truth, 0.05).objects};
+  for (const auto& o : out.objects)
+    out.within += o.estimate >= 0 && o.error.centre <= 0.01 && o.error.angle <= 3.0 * std::numbers::pi / 180.0 &&
+                  o.error.max_size() <= 0.01;
+  return out;
+}
+}  // namespace
+
 TEST_CASE("simulated clouds: single boxes recovered within 1 cm / 3 degrees", "[perception][sim]") {
   SimFamily fam = sim_families(5, 6).front();
   REQUIRE(fam.name == "singles");
@@ -18,16 +36,11 @@ TEST_CASE("simulated clouds: single boxes recovered within 1 cm / 3 degrees", "[
   for (std::uint64_t s = 0; s < 3; ++s) {
     const SimFrame f = simulate_frame(ksmc::tools::tabletop_sim::scene_seed(7, s), fam);
     CHECK(f.cloud.size() > 10000);
-    CloudOptions opt;
-    opt.camera = scene_camera(f.scene.camera);
-    const CloudScene cs = scene_from_points(f.cloud, "sim", opt);
-    const TruthReport rep = evaluate_same_frame(camera_frame_boxes(cs.scene), f.truth, 0.05);
+    const Scored r = front_end(f);
     boxes += static_cast<int>(f.truth.size());
-    for (const auto& o : rep.objects) {
-      if (o.estimate < 0) continue;
-      centre.push_back(o.error.centre);
-      within += o.error.centre <= 0.01 && o.error.angle <= 3.0 * std::numbers::pi / 180.0 && o.error.max_size() <= 0.01;
-    }
+    within += r.within;
+    for (const auto& o : r.objects)
+      if (o.estimate >= 0) centre.push_back(o.error.centre);
   }
   std::sort(centre.begin(), centre.end());
   INFO(within << " of " << boxes << " within tolerance");
@@ -46,20 +59,35 @@ TEST_CASE("simulated clouds: leaning boxes get tilted boxes", "[perception][sim]
     boxes += static_cast<int>(f.truth.size());
     for (int tilted = 0; tilted < 2; ++tilted) {
       CloudOptions opt;
-      opt.camera = scene_camera(f.scene.camera);
       opt.fit.tilted = tilted == 1;
-      const CloudScene cs = scene_from_points(f.cloud, "sim", opt);
-      for (const auto& o : evaluate_same_frame(camera_frame_boxes(cs.scene), f.truth, 0.05).objects) {
-        if (o.estimate < 0) continue;
-        within[tilted] += o.error.centre <= 0.01 && o.error.angle <= 3.0 * std::numbers::pi / 180.0 && o.error.max_size() <= 0.01;
-        if (tilted) worst_angle = std::max(worst_angle, o.error.angle);
-      }
+      const Scored r = front_end(f, opt);
+      within[tilted] += r.within;
+      for (const auto& o : r.objects)
+        if (tilted && o.estimate >= 0) worst_angle = std::max(worst_angle, o.error.angle);
     }
   }
   INFO("within tolerance of " << boxes << ": upright fit " << within[0] << ", with tilted boxes " << within[1]);
   CHECK(within[1] >= within[0] + 2);
   CHECK(within[1] >= (boxes * 8) / 10);
   CHECK(worst_angle < 10.0 * std::numbers::pi / 180.0);
+}
+
+TEST_CASE("simulated clouds: a box resting on a box it overhangs is found by the free-space test", "[perception][sim]") {
+  SimFamily fam = sim_families(5, 10)[2];
+  REQUIRE(fam.name == "stacks");
+  int within[2] = {0, 0}, boxes = 0;  // footprint test alone, with the free-space test
+  for (std::uint64_t s = 0; s < 10; ++s) {
+    const SimFrame f = simulate_frame(ksmc::tools::tabletop_sim::scene_seed(1, s), fam);
+    boxes += static_cast<int>(f.truth.size());
+    for (int free_space = 0; free_space < 2; ++free_space) {
+      CloudOptions opt;
+      opt.fit.stacks.free_space = free_space == 1;
+      within[free_space] += front_end(f, opt).within;
+    }
+  }
+  INFO("within tolerance of " << boxes << ": footprint test " << within[0] << ", with the free-space test " << within[1]);
+  CHECK(within[1] >= within[0] + 3);
+  CHECK(within[1] >= (boxes * 68) / 100);
 }
 
 TEST_CASE("depth render: deterministic, missing returns thin the cloud", "[perception][sim]") {

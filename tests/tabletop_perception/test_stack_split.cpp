@@ -1,5 +1,5 @@
-// One cluster, several boxes: a box resting on a box, two touching neighbours of different
-// heights, and a tilted box that must stay one box.
+// One cluster, several boxes: a box resting on a box (also one overhanging it: the free-space
+// test), two touching neighbours of different heights, and a tilted box that must stay one box.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -9,6 +9,7 @@
 
 using namespace ksmc::stdlib::tabletop::perception;
 using ksmc::tests::perception::add_box;
+using ksmc::tests::perception::CastBox;
 
 namespace {
 // Box surface without the faces a camera above cannot see (the bottom) shifted up by `lift`.
@@ -48,6 +49,52 @@ TEST_CASE("stack split: touching neighbours of different heights both stand on t
   for (const auto& b : boxes) CHECK(b.pose.t.z() - 0.5 * b.size.z() == Approx(0.0).margin(0.003));
   CHECK(boxes[1].size.z() == Approx(0.18).margin(0.004));
   CHECK(boxes[0].size.z() == Approx(0.05).margin(0.004));
+}
+
+namespace {
+CastBox upright(double cx, double cy, double bottom, const Eigen::Vector3d& size) {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.translation() = Eigen::Vector3d(cx, cy, bottom + 0.5 * size.z());
+  return {pose, size};
+}
+// The free space of a rendered view, and the points of its objects (above 12 mm).
+struct View {
+  FreeSpace seen;
+  Points cluster;
+};
+View rendered(const std::vector<CastBox>& boxes) {
+  View v;
+  v.seen.sensor = Eigen::Vector3d(0.45, -0.55, 0.6);
+  v.seen.points = ksmc::tests::perception::cast_view(v.seen.sensor, Eigen::Vector3d(0.05, 0.0, 0.05), 0.3, 0.003, boxes, 0.6, 0.4);
+  for (const auto& p : v.seen.points)
+    if (p.z() > 0.012) v.cluster.push_back(p);
+  return v;
+}
+}  // namespace
+
+TEST_CASE("stack split: a box overhanging the box it rests on rests on it (the sensor saw under the overhang)",
+          "[perception][stack]") {
+  // Lower box 20 x 14 x 6 cm; the upper 24 x 8 x 5 cm lies across its edge: 37.5 % of its
+  // footprint is over the lower box, the rest overhangs the table.
+  const View v = rendered({upright(0.0, 0.0, 0.0, {0.2, 0.14, 0.06}), upright(0.13, 0.0, 0.06, {0.24, 0.08, 0.05})});
+  const auto boxes = fit_stacked_boxes(v.cluster, {}, {}, &v.seen);
+  REQUIRE(boxes.size() == 2);
+  CHECK(boxes[1].pose.t.z() - 0.5 * boxes[1].size.z() == Approx(0.06).margin(0.012));
+  CHECK(boxes[1].size.z() == Approx(0.05).margin(0.012));
+  CHECK(std::max(boxes[1].size.x(), boxes[1].size.y()) == Approx(0.24).margin(0.01));
+  // Without the free space, the footprint test alone takes the upper box for a taller
+  // neighbour standing on the table.
+  const auto blind = fit_stacked_boxes(v.cluster);
+  REQUIRE(blind.size() == 2);
+  CHECK(blind[1].pose.t.z() - 0.5 * blind[1].size.z() == Approx(0.0).margin(0.005));
+}
+
+TEST_CASE("stack split: a taller neighbour the sensor sees down to the table stands on it", "[perception][stack]") {
+  const View v = rendered({upright(0.0, 0.0, 0.0, {0.1, 0.1, 0.05}), upright(0.0855, 0.0, 0.0, {0.07, 0.07, 0.18})});
+  const auto boxes = fit_stacked_boxes(v.cluster, {}, {}, &v.seen);
+  REQUIRE(boxes.size() == 2);
+  for (const auto& b : boxes) CHECK(b.pose.t.z() - 0.5 * b.size.z() == Approx(0.0).margin(0.005));
+  CHECK(boxes[1].size.z() == Approx(0.18).margin(0.005));
 }
 
 TEST_CASE("stack split: a single box, upright or tilted, stays one box", "[perception][stack]") {

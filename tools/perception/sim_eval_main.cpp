@@ -1,4 +1,5 @@
-// ksmc-perception-sim [--scenes N] [--objects A..B] [--seed S] [--sigma M] [--missing R] [--stride K] [--upright] [--visible V] [--verbose]
+// ksmc-perception-sim [--scenes N] [--objects A..B] [--seed S] [--sigma M] [--missing R] [--stride K] [--upright]
+//                     [--footprint-only] [--visible V] [--verbose]
 // Renders depth clouds of generated scenes (three families), runs the point-cloud front end
 // and prints, per family, how well the boxes are recovered (camera frame, nearest-centre
 // matching within 5 cm). "in tol" is over all boxes; "vis>=V" repeats it over the boxes
@@ -40,6 +41,7 @@ int main(int argc, char** argv) {
   int stride = 2;
   bool verbose = false;
   bool upright = false;  // the upright fit only (no tilted boxes): the figures before tilted_box.h
+  bool footprint_only = false;  // stacks without the free-space test: the figures before it
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
@@ -49,6 +51,10 @@ int main(int argc, char** argv) {
       }
       if (a == "--upright") {
         upright = true;
+        continue;
+      }
+      if (a == "--footprint-only") {
+        footprint_only = true;
         continue;
       }
       if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
@@ -89,6 +95,7 @@ int main(int argc, char** argv) {
         pc::CloudOptions opt;
         opt.camera = ps::scene_camera(f.scene.camera);
         opt.fit.tilted = !upright;
+        opt.fit.stacks.free_space = !footprint_only;
         const pc::CloudScene cs = pc::scene_from_points(f.cloud, fmt::format("{} scene {}", fam.name, s), opt);
         const pc::TruthReport rep = pc::evaluate_same_frame(pc::camera_frame_boxes(cs.scene), f.truth, 0.05);
         std::vector<ksmc::tools::tabletop_sim::Box> truth_boxes;

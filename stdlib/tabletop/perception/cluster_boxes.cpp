@@ -4,7 +4,7 @@
 
 namespace ksmc::stdlib::tabletop::perception {
 
-std::vector<UprightBox> fit_cluster_boxes(const Points& points, const ClusterBoxOptions& o) {
+std::vector<UprightBox> fit_cluster_boxes(const Points& points, const ClusterBoxOptions& o, const FreeSpace* seen) {
   std::vector<UprightBox> out;
   std::deque<Points> todo{points};
   int tilted = 0;
@@ -24,7 +24,7 @@ std::vector<UprightBox> fit_cluster_boxes(const Points& points, const ClusterBox
       }
     }
     if (o.split_stacks) {
-      for (const UprightBox& b : fit_stacked_boxes(part, o.box, o.stacks)) out.push_back(b);
+      for (const UprightBox& b : fit_stacked_boxes(part, o.box, o.stacks, seen)) out.push_back(b);
     } else {
       out.push_back(fit_upright_box(part, o.box));
     }

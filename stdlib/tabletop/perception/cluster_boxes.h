@@ -22,7 +22,9 @@ struct ClusterBoxOptions {
   int max_tilted = 4;     // per cluster
 };
 
-// Boxes of `points` (table frame), at least one when `points` is not empty.
-std::vector<UprightBox> fit_cluster_boxes(const Points& points, const ClusterBoxOptions& options = {});
+// Boxes of `points` (table frame), at least one when `points` is not empty. `seen`: the
+// whole cloud and the sensor, for the stacks' free-space test (stack_split.h); may be null.
+std::vector<UprightBox> fit_cluster_boxes(const Points& points, const ClusterBoxOptions& options = {},
+                                          const FreeSpace* seen = nullptr);
 
 }  // namespace ksmc::stdlib::tabletop::perception

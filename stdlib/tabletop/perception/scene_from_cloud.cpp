@@ -36,8 +36,11 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
   stage(fmt::format("fitting boxes to {} clusters", clusters.size()));
   ClusterBoxOptions fit = options.fit;
   fit.parts = options.clusters;  // the rest after a tilted box is split as the cloud was
+  FreeSpace seen;  // the stacks' free-space test: what the sensor saw through
+  seen.points = out.cloud_in_table;
+  seen.sensor = out.sensor_in_table;
   for (std::size_t c = 0; c < clusters.size(); ++c) {
-    const std::vector<UprightBox> boxes = fit_cluster_boxes(clusters[c], fit);
+    const std::vector<UprightBox> boxes = fit_cluster_boxes(clusters[c], fit, &seen);
     for (const UprightBox& box : boxes) {
       SceneObject o;
       o.id = options.id_prefix + std::to_string(s.objects.size());

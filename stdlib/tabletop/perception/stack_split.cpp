@@ -59,6 +59,22 @@ double covered(const Rect2& a, const Rect2& b) {
   return in / 400.0;
 }
 
+// True when the sensor saw through where the upper box's column would stand below the
+// lower plateau: rays ended behind that space, so no box stands there.
+bool seen_through_below(const Rect2& column, double below, std::size_t upper_points, const StackOptions& o,
+                        const FreeSpace& seen) {
+  const double height = below - 2.0 * o.seen_inset;
+  if (height <= 0.0 || column.half.x() <= o.seen_inset || column.half.y() <= o.seen_inset) return false;
+  Obb under;
+  under.center = Eigen::Vector3d(column.center.x(), column.center.y(), 0.5 * below);
+  under.axes.col(0) = Eigen::Vector3d(column.u.x(), column.u.y(), 0.0);
+  under.axes.col(1) = Eigen::Vector3d(column.v().x(), column.v().y(), 0.0);
+  under.axes.col(2) = Eigen::Vector3d::UnitZ();
+  under.half = Eigen::Vector3d(column.half.x() - o.seen_inset, column.half.y() - o.seen_inset, 0.5 * height);
+  const double limit = std::max(static_cast<double>(o.min_seen_through), o.seen_through_share * static_cast<double>(upper_points));
+  return static_cast<double>(see_through_count(under, seen)) > limit;
+}
+
 std::vector<Eigen::Vector2d> flat(const Points& pts) {
   std::vector<Eigen::Vector2d> f;
   for (const auto& p : pts) f.emplace_back(p.x(), p.y());
@@ -67,7 +83,8 @@ std::vector<Eigen::Vector2d> flat(const Points& pts) {
 
 }  // namespace
 
-std::vector<UprightBox> fit_stacked_boxes(const Points& points, const BoxFitOptions& box, const StackOptions& o) {
+std::vector<UprightBox> fit_stacked_boxes(const Points& points, const BoxFitOptions& box, const StackOptions& o,
+                                          const FreeSpace* seen) {
   std::vector<UprightBox> upper;  // found from the top down
   Points rest = points;
   while (static_cast<int>(upper.size()) + 1 < o.max_boxes) {
@@ -85,7 +102,8 @@ std::vector<UprightBox> fit_stacked_boxes(const Points& points, const BoxFitOpti
     if (remaining.size() < o.min_points) break;
     const Rect2 under = min_area_rect(flat(remaining), box.footprint_trim);
     UprightBox b = fit_upright_box(top, box);
-    if (covered(column, under) >= o.min_support) {  // resting on the rest: bottom at the plateau below
+    if (covered(column, under) >= o.min_support ||
+        (o.free_space && seen != nullptr && seen_through_below(column, below, top.size(), o, *seen))) {  // resting on the rest: bottom at the plateau below
       const double top_z = b.pose.t.z() + 0.5 * b.size.z();
       b.size.z() = std::max(top_z - below, box.min_size);
       b.pose.t.z() = below + 0.5 * b.size.z();

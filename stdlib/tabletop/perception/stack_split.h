@@ -4,12 +4,15 @@
 // cell maxima are top heights) forms one plateau per box top. Peeling from the top: the
 // points above the next plateau down are the upper box; the rest, without the upper box's
 // column, is fitted again. The upper box rests on the rest when the rest's footprint
-// covers most of its own, otherwise it stands on the table (a merged taller neighbour).
+// covers most of its own, or when the sensor saw through the space below it (a box that
+// overhangs the one it rests on: a box standing on the table there would have blocked
+// those rays); otherwise it stands on the table (a merged taller neighbour).
 #pragma once
 
 #include <vector>
 
 #include "stdlib/tabletop/perception/box_fit.h"
+#include "stdlib/tabletop/perception/cloud_likelihood.h"
 
 namespace ksmc::stdlib::tabletop::perception {
 
@@ -21,11 +24,20 @@ struct StackOptions {
   double column_margin = 0.006;  // m, the upper box's column is its rectangle grown by this
   double min_support = 0.5;      // share of the upper footprint over the rest that means "stacked"
   std::size_t min_points = 40;   // a part with fewer points is dropped
+  // Free-space test of "stands on the table" (off: the footprint test alone, as before it
+  // existed; it also needs the `seen` argument): the column below the lower plateau, inset by
+  // `seen_inset` on every side, may be crossed by at most max(min_seen_through,
+  // seen_through_share x the upper box's points) rays.
+  bool free_space = true;
+  double seen_inset = 0.005;     // m
+  std::size_t min_seen_through = 20;
+  double seen_through_share = 0.05;
   int max_boxes = 6;
 };
 
-// Boxes of one cluster (table frame), lowest first. Always at least one box.
+// Boxes of one cluster (table frame), lowest first. Always at least one box. `seen`: the
+// whole cloud and the sensor (same frame), for the free-space test; null skips it.
 std::vector<UprightBox> fit_stacked_boxes(const Points& points, const BoxFitOptions& box = {},
-                                          const StackOptions& options = {});
+                                          const StackOptions& options = {}, const FreeSpace* seen = nullptr);
 
 }  // namespace ksmc::stdlib::tabletop::perception
