@@ -2,6 +2,7 @@
 // scene.json read back by stdlib/tabletop/scene_io; units; bad input.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -19,11 +20,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-Points two_box_scene() {
+// Two boxes on a table, the boxes sampled on a grid of `step` m.
+Points two_box_scene(double step = 0.005) {
   Points pts;
-  tp::add_table(pts, 0.4, 0.3, 0.01);
-  tp::add_box(pts, -0.15, 0.05, 0.3, Eigen::Vector3d(0.12, 0.06, 0.2), 0.005);
-  tp::add_box(pts, 0.12, -0.08, 1.1, Eigen::Vector3d(0.08, 0.08, 0.05), 0.005);
+  tp::add_table(pts, 0.4, 0.3, std::max(step, 0.01));
+  tp::add_box(pts, -0.15, 0.05, 0.3, Eigen::Vector3d(0.12, 0.06, 0.2), step);
+  tp::add_box(pts, 0.12, -0.08, 1.1, Eigen::Vector3d(0.08, 0.08, 0.05), step);
   return tp::to_sensor(pts, tp::example_sensor_pose());
 }
 
@@ -81,6 +83,28 @@ TEST_CASE("front end: table frame, two boxes, scene.json round trip", "[percepti
   }
   // Byte-identical output for identical input.
   CHECK(scene_json_text(cs.scene) == scene_json_text(scene_from_points(two_box_scene(), "synthetic").scene));
+}
+
+TEST_CASE("front end: a sparse cloud gets its clustering tolerance from its point spacing", "[perception][front_end]") {
+  // A 14 mm grid (a low-resolution sensor, a far table, a voxel filter): no point has a
+  // neighbour within the 8 mm floor.
+  const Points sparse = two_box_scene(0.014);
+  const CloudScene cs = scene_from_points(sparse, "sparse");
+  CHECK(cs.point_spacing == Approx(0.014).margin(0.001));
+  CHECK(cs.cluster_tolerance == Approx(0.028).margin(0.002));
+  REQUIRE(cs.scene.objects.size() == 2);
+  for (const auto& o : cs.scene.objects) {
+    const double high = o.size.z(), wide = std::max(o.size.x(), o.size.y());
+    const bool tall = high > 0.1;
+    CHECK(high == Approx(tall ? 0.2 : 0.05).margin(0.015));
+    CHECK(wide == Approx(tall ? 0.12 : 0.08).margin(0.015));
+  }
+  // The fixed tolerance finds no object in it.
+  CloudOptions fixed;
+  fixed.clusters.spacing_factor = 0.0;
+  CHECK_THROWS_AS(scene_from_points(sparse, "sparse", fixed), CloudError);
+  // A dense cloud (3 mm grid) keeps the floor.
+  CHECK(scene_from_points(two_box_scene(0.003), "dense").cluster_tolerance == Approx(0.008));
 }
 
 TEST_CASE("front end: PLY units and bad input name the file", "[perception][front_end][errors]") {

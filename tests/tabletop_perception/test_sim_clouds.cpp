@@ -90,6 +90,24 @@ TEST_CASE("simulated clouds: a box resting on a box it overhangs is found by the
   CHECK(within[1] >= (boxes * 68) / 100);
 }
 
+TEST_CASE("simulated clouds: a sensor of a quarter the resolution keeps most boxes (the derived tolerance)", "[perception][sim]") {
+  SimFamily fam = sim_families(5, 6).front();
+  fam.depth.stride = 4;  // every 4th pixel: 160 x 120 returns
+  int within[2] = {0, 0}, boxes = 0;  // fixed 8 mm tolerance, derived from the point spacing
+  for (std::uint64_t s = 0; s < 3; ++s) {
+    const SimFrame f = simulate_frame(ksmc::tools::tabletop_sim::scene_seed(7, s), fam);
+    boxes += static_cast<int>(f.truth.size());
+    for (int derived = 0; derived < 2; ++derived) {
+      CloudOptions opt;
+      if (!derived) opt.clusters.spacing_factor = 0.0;
+      within[derived] += front_end(f, opt).within;
+    }
+  }
+  INFO("within tolerance of " << boxes << ": fixed tolerance " << within[0] << ", derived " << within[1]);
+  CHECK(within[1] >= within[0] + 3);
+  CHECK(within[1] >= (boxes * 7) / 10);
+}
+
 TEST_CASE("depth render: deterministic, missing returns thin the cloud", "[perception][sim]") {
   SimFamily fam = sim_families(3, 3).front();
   const SimFrame a = simulate_frame(5, fam), b = simulate_frame(5, fam);

@@ -1,5 +1,7 @@
 // ksmc-cloud-scene CLOUD --out DIR [--cloud-units cm|mm|m] [--truth obb_world.json] [--gate M]
-//                  [--clusters FILE] [--min-height M] [--tolerance M] [--min-points N]
+//                  [--clusters FILE] [--min-height M] [--tolerance M] [--spacing-factor F] [--min-points N]
+// --tolerance is the clustering tolerance's floor; a sparser cloud gets F (default 2) times
+// its object point spacing (--spacing-factor 0: the tolerance as given).
 // Runs the point-cloud front end, writes DIR/scene.json and prints one line per box; with
 // --truth, registers the boxes to the true ones and prints the errors.
 // Exit codes: 0 ok, 1 bad input (message names the file), 2 bad arguments.
@@ -86,6 +88,7 @@ int main(int argc, char** argv) {
       else if (a == "--clusters") clusters_out = value("--clusters");
       else if (a == "--min-height") options.clusters.min_height = std::stod(value("--min-height"));
       else if (a == "--tolerance") options.clusters.tolerance = std::stod(value("--tolerance"));
+      else if (a == "--spacing-factor") options.clusters.spacing_factor = std::stod(value("--spacing-factor"));
       else if (a == "--min-points") options.clusters.min_points = std::stoul(value("--min-points"));
       else if (!a.empty() && a[0] == '-') return usage("unknown option " + a);
       else if (cloud.empty()) cloud = a;
@@ -103,6 +106,8 @@ int main(int argc, char** argv) {
     fmt::print("{}: {} points, table {} inliers (rms {:.1f} mm, {:.2f} x {:.2f} m), {} objects\n", cloud.string(),
                cs.cloud_points, cs.table.inliers, 1000.0 * cs.table.rms, cs.table.extent.x(), cs.table.extent.y(),
                cs.scene.objects.size());
+    fmt::print("object point spacing {:.1f} mm, clustering tolerance {:.1f} mm\n", 1000.0 * cs.point_spacing,
+               1000.0 * cs.cluster_tolerance);
     for (std::size_t i = 0; i < cs.scene.objects.size(); ++i) {
       const auto& o = cs.scene.objects[i];
       fmt::print("  {:<8} {:>6} points, size {:.1f} x {:.1f} x {:.1f} mm, centre ({:.3f}, {:.3f}, {:.3f}) m\n", o.id,

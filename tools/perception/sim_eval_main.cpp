@@ -1,5 +1,5 @@
 // ksmc-perception-sim [--scenes N] [--objects A..B] [--seed S] [--sigma M] [--missing R] [--stride K] [--upright]
-//                     [--footprint-only] [--visible V] [--verbose]
+//                     [--footprint-only] [--fixed-tolerance] [--visible V] [--verbose]
 // Renders depth clouds of generated scenes (three families), runs the point-cloud front end
 // and prints, per family, how well the boxes are recovered (camera frame, nearest-centre
 // matching within 5 cm). "in tol" is over all boxes; "vis>=V" repeats it over the boxes
@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
   bool verbose = false;
   bool upright = false;  // the upright fit only (no tilted boxes): the figures before tilted_box.h
   bool footprint_only = false;  // stacks without the free-space test: the figures before it
+  bool fixed_tolerance = false;  // the 8 mm clustering tolerance whatever the sampling: the figures before it
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
@@ -55,6 +56,10 @@ int main(int argc, char** argv) {
       }
       if (a == "--footprint-only") {
         footprint_only = true;
+        continue;
+      }
+      if (a == "--fixed-tolerance") {
+        fixed_tolerance = true;
         continue;
       }
       if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
@@ -96,6 +101,7 @@ int main(int argc, char** argv) {
         opt.camera = ps::scene_camera(f.scene.camera);
         opt.fit.tilted = !upright;
         opt.fit.stacks.free_space = !footprint_only;
+        if (fixed_tolerance) opt.clusters.spacing_factor = 0.0;
         const pc::CloudScene cs = pc::scene_from_points(f.cloud, fmt::format("{} scene {}", fam.name, s), opt);
         const pc::TruthReport rep = pc::evaluate_same_frame(pc::camera_frame_boxes(cs.scene), f.truth, 0.05);
         std::vector<ksmc::tools::tabletop_sim::Box> truth_boxes;

@@ -11,10 +11,12 @@
 
 namespace ksmc::stdlib::tabletop::perception {
 
-std::vector<Points> cluster_objects(const Points& table_points, const Eigen::Vector2d& extent,
-                                    const ClusterOptions& options) {
+namespace {
+
+// The points above the table inside its extent, as kept points and as a PCL cloud.
+pcl::PointCloud<pcl::PointXYZ>::Ptr points_above(const Points& table_points, const Eigen::Vector2d& extent,
+                                                 const ClusterOptions& options, Points& kept) {
   pcl::PointCloud<pcl::PointXYZ>::Ptr above(new pcl::PointCloud<pcl::PointXYZ>);
-  Points kept;
   for (const auto& p : table_points) {
     if (p.z() < options.min_height || p.z() > options.max_height) continue;
     if (std::abs(p.x()) > 0.5 * extent.x() + options.table_margin) continue;
@@ -22,6 +24,34 @@ std::vector<Points> cluster_objects(const Points& table_points, const Eigen::Vec
     kept.push_back(p);
     above->push_back(pcl::PointXYZ(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())));
   }
+  return above;
+}
+
+}  // namespace
+
+double object_point_spacing(const Points& table_points, const Eigen::Vector2d& extent, const ClusterOptions& options,
+                            std::size_t max_queries) {
+  Points kept;
+  const pcl::PointCloud<pcl::PointXYZ>::Ptr above = points_above(table_points, extent, options, kept);
+  if (above->size() < 2 || max_queries == 0) return 0.0;
+  pcl::search::KdTree<pcl::PointXYZ> tree;
+  tree.setInputCloud(above);
+  const std::size_t step = std::max<std::size_t>(1, above->size() / max_queries);
+  pcl::Indices nearest;
+  std::vector<float> squared;
+  std::vector<double> spacing;
+  for (std::size_t i = 0; i < above->size(); i += step)
+    if (tree.nearestKSearch(static_cast<pcl::index_t>(i), 2, nearest, squared) == 2)
+      spacing.push_back(std::sqrt(static_cast<double>(squared[1])));
+  if (spacing.empty()) return 0.0;
+  std::nth_element(spacing.begin(), spacing.begin() + static_cast<std::ptrdiff_t>(spacing.size() / 2), spacing.end());
+  return spacing[spacing.size() / 2];
+}
+
+std::vector<Points> cluster_objects(const Points& table_points, const Eigen::Vector2d& extent,
+                                    const ClusterOptions& options) {
+  Points kept;
+  const pcl::PointCloud<pcl::PointXYZ>::Ptr above = points_above(table_points, extent, options, kept);
   std::vector<Points> out;
   if (above->empty()) return out;
 

@@ -13,10 +13,20 @@ struct ClusterOptions {
   double min_height = 0.012;   // m above the table top (below: table noise)
   double max_height = 0.6;     // m
   double table_margin = 0.02;  // m beyond the table's extent still counted as on the table
-  double tolerance = 0.008;    // m, Euclidean neighbour distance (HOPE: 5 mm gaps, 4-pixel stride)
+  double tolerance = 0.008;    // m, Euclidean neighbour distance (HOPE: 5 mm gaps, 4-pixel stride);
+                               // the floor of the tolerance scene_from_points derives (spacing_factor)
+  double spacing_factor = 2.0; // scene_from_points: tolerance = max(tolerance, this x the median
+                               // nearest-neighbour spacing of the points above the table); 0: fixed
   std::size_t min_points = 40;
   std::size_t max_points = 10'000'000;
 };
+
+// Median distance from a point above the table (as cluster_objects selects them) to its
+// nearest neighbour: the cloud's sampling step on the objects (sensor resolution and
+// range, or a voxel filter's size). Over at most `max_queries` points spread evenly; 0
+// when fewer than two points are above the table.
+double object_point_spacing(const Points& table_points, const Eigen::Vector2d& extent, const ClusterOptions& options = {},
+                            std::size_t max_queries = 4000);
 
 // Clusters of `table_points` (table frame) above a table of size `extent` centred on the
 // origin, ordered by centroid x then y (deterministic ids).

@@ -1,10 +1,37 @@
 #include "stdlib/tabletop/perception/scene_from_cloud.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "runtime/io/cancel.h"
 
 namespace ksmc::stdlib::tabletop::perception {
+
+namespace {
+
+// The box fits' sampling-dependent settings for a cloud `rho` times sparser than the one
+// they were set on (rho = derived / floor clustering tolerance, >= 1): neighbourhood radii
+// and cells grow by rho, point counts shrink by rho^2.
+ClusterBoxOptions for_sampling(ClusterBoxOptions fit, double rho) {
+  if (rho <= 1.0) return fit;
+  const auto fewer = [rho](std::size_t n) {
+    return std::max<std::size_t>(3, static_cast<std::size_t>(std::lround(static_cast<double>(n) / (rho * rho))));
+  };
+  fit.tilt.faces.normal_radius *= rho;
+  fit.tilt.faces.grow_radius *= rho;
+  fit.tilt.faces.min_points = fewer(fit.tilt.faces.min_points);
+  fit.tilt.min_face_points = fewer(fit.tilt.min_face_points);
+  fit.tilt.own_margin *= rho;
+  fit.tilt.probe_voxel *= rho;
+  fit.stacks.cell *= rho;
+  fit.stacks.column_margin *= rho;
+  fit.stacks.min_points = fewer(fit.stacks.min_points);
+  return fit;
+}
+
+}  // namespace
 
 CloudScene scene_from_points(const Points& cloud, const std::string& source, const CloudOptions& options) {
   if (cloud.empty()) throw CloudError(fmt::format("{}: empty cloud: no points", source));
@@ -18,14 +45,20 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
   out.table = fit_table(cloud, source, options.table);
   out.cloud_in_table = to_table_frame(cloud, out.table.table_in_cloud);
   out.sensor_in_table = out.table.table_in_cloud.inverse().t;
-  stage("clustering the points above the table");
-  out.object_points = cluster_objects(out.cloud_in_table, out.table.extent, options.clusters);
+  ClusterOptions clusters_options = options.clusters;
+  if (options.clusters.spacing_factor > 0.0) {  // a sparser cloud (resolution, range, voxel filter) needs more
+    out.point_spacing = object_point_spacing(out.cloud_in_table, out.table.extent, options.clusters);
+    clusters_options.tolerance = std::max(options.clusters.tolerance, options.clusters.spacing_factor * out.point_spacing);
+  }
+  out.cluster_tolerance = clusters_options.tolerance;
+  stage(fmt::format("clustering the points above the table ({:.1f} mm tolerance)", 1000.0 * clusters_options.tolerance));
+  out.object_points = cluster_objects(out.cloud_in_table, out.table.extent, clusters_options);
   if (out.object_points.empty())
     throw CloudError(fmt::format("{}: no object above the table ({} table points, none of the other {} points "
                                  "forms a cluster of {} points between {} and {} m above it)",
                                  source, out.table.inliers, cloud.size() - out.table.inliers,
-                                 options.clusters.min_points, options.clusters.min_height,
-                                 options.clusters.max_height));
+                                 clusters_options.min_points, clusters_options.min_height,
+                                 clusters_options.max_height));
 
   Scene& s = out.scene;
   s.camera = options.camera;
@@ -35,7 +68,8 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
   out.object_points.clear();
   stage(fmt::format("fitting boxes to {} clusters", clusters.size()));
   ClusterBoxOptions fit = options.fit;
-  fit.parts = options.clusters;  // the rest after a tilted box is split as the cloud was
+  if (options.clusters.tolerance > 0.0) fit = for_sampling(fit, clusters_options.tolerance / options.clusters.tolerance);
+  fit.parts = clusters_options;  // the rest after a tilted box is split as the cloud was
   FreeSpace seen;  // the stacks' free-space test: what the sensor saw through
   seen.points = out.cloud_in_table;
   seen.sensor = out.sensor_in_table;

@@ -1,6 +1,6 @@
-// The point-cloud front end (issue 13, part 1): cloud file -> table frame -> clusters ->
-// one upright box per cluster -> the stdlib/tabletop Scene the kit consumes, plus the
-// per-object points the cloud likelihood needs. The cloud frame is taken as the camera
+// The point-cloud front end (issue 13, part 1): cloud file -> table frame -> point spacing
+// -> clusters -> one upright box per cluster -> the stdlib/tabletop Scene the kit consumes,
+// plus the per-object points the cloud likelihood needs. The cloud frame is taken as the camera
 // frame (Scene::table_in_camera = the table frame in the cloud frame).
 #pragma once
 
@@ -23,6 +23,9 @@ namespace ksmc::stdlib::tabletop::perception {
 struct CloudOptions {
   Units units = Units::m;
   TableOptions table;
+  // clusters.tolerance is a floor: a sparser cloud gets spacing_factor x its object point
+  // spacing, and the box fits' radii, cells and point counts follow (sampling-dependent
+  // settings scaled by derived / floor tolerance); spacing_factor = 0 keeps everything fixed.
   ClusterOptions clusters;
   ClusterBoxOptions fit;     // boxes per cluster: tilted, stacked, upright (cluster_boxes.h)
   Camera camera{615.0, 615.0, 320.0, 240.0, 640, 480};  // written to scene.json (overlay)
@@ -41,6 +44,8 @@ struct CloudScene {
   std::size_t cloud_points = 0;
   Points cloud_in_table;               // the whole cloud in the table frame
   Eigen::Vector3d sensor_in_table = Eigen::Vector3d::Zero();  // the cloud origin
+  double point_spacing = 0.0;      // m, object_point_spacing (0 when not derived)
+  double cluster_tolerance = 0.0;  // m, the clustering tolerance used
 };
 
 // The clusters mapped back into the cloud frame.
