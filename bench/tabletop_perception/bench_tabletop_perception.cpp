@@ -16,7 +16,7 @@
 
 #include <fmt/format.h>
 
-#include "stdlib/tabletop/perception/cloud_likelihood.h"
+#include "stdlib/tabletop/cloud_likelihood.h"
 #include "tools/perception_sim/sim_cloud.h"
 
 namespace pc = ksmc::stdlib::tabletop::perception;
@@ -68,9 +68,9 @@ int main(int argc, char** argv) {
         ply.push_back(seconds([&] { cs = pc::scene_from_cloud(file, opt); }, runs));
         std::vector<ksmc::stdlib::tabletop::Obb> boxes;
         for (const auto& o : cs.scene.objects) boxes.push_back(o.obb());
-        pc::CloudLikelihood cl(cs.object_points, boxes);
+        ksmc::stdlib::tabletop::CloudLikelihood cl(cs.object_points, boxes);
         volatile double sink = 0.0;
-        lik.push_back(1e6 * seconds([&] { sink = sink + pc::CloudLikelihood(cs.object_points, boxes).total(); }, runs));
+        lik.push_back(1e6 * seconds([&] { sink = sink + ksmc::stdlib::tabletop::CloudLikelihood(cs.object_points, boxes).total(); }, runs));
         auto moved = boxes[0];
         moved.center.z() += 0.001;
         upd.push_back(1e6 * seconds([&] { sink = sink + cl.update(0, moved); }, runs));

@@ -184,7 +184,10 @@ class ModelEmitter {
       o << "  b.conditional_priors.push_back({" << types << ", " << conds << ", &" << cpp_identifier(p.function) << ", "
         << cpp_string(p.text) << "});\n";
     }
-    if (ir_.likelihood) o << "  b.likelihood = " << call(ir_.likelihood->call) << ";\n";
+    // Several likelihood items are factors of one likelihood: the kit's likelihood type
+    // multiplies its blocks (`*=`).
+    for (std::size_t i = 0; i < ir_.likelihoods.size(); ++i)
+      o << "  b.likelihood " << (i == 0 ? "=" : "*=") << " " << call(ir_.likelihoods[i].call) << ";\n";
     for (const lower::ItemCallIr& out : ir_.outputs) o << "  b.outputs.push_back(" << call(out.call) << ");\n";
     for (const lower::KernelIr& k : ir_.kernels) {
       std::string sources = "{";

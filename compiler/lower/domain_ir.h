@@ -142,7 +142,7 @@ struct DomainIr {
   std::vector<ModelVarIr> model;
   std::vector<ExtractIr> extracts;
   std::vector<PriorIr> priors;  // source order, global and conditional
-  std::optional<ItemCallIr> likelihood;
+  std::vector<ItemCallIr> likelihoods;  // source order; several are factors of one likelihood
   std::vector<ItemCallIr> outputs;
   std::vector<KernelIr> kernels;
   std::vector<ScheduleRowIr> schedule;

@@ -39,9 +39,9 @@ class Dumper {
       out_ << "  @" << at(p.loc) << "\n";
       call(p.call, 1);
     }
-    if (ir.likelihood) {
-      out_ << "likelihood  @" << at(ir.likelihood->loc) << "\n";
-      call(ir.likelihood->call, 1);
+    for (const ItemCallIr& l : ir.likelihoods) {
+      out_ << "likelihood  @" << at(l.loc) << "\n";
+      call(l.call, 1);
     }
     for (const ItemCallIr& o : ir.outputs) {
       out_ << "output  @" << at(o.loc) << "\n";

@@ -52,7 +52,7 @@ class DomainLowerer {
       } else if (const auto* p = std::get_if<ast::PriorDecl>(&item.node)) {
         ir.priors.push_back(prior(*p, item));
       } else if (const auto* l = std::get_if<ast::LikelihoodDecl>(&item.node)) {
-        ir.likelihood = ItemCallIr{call(l->call, {}), text(item), item.loc};
+        ir.likelihoods.push_back(ItemCallIr{call(l->call, {}), text(item), item.loc});
       } else if (const auto* o = std::get_if<ast::OutputDecl>(&item.node)) {
         ir.outputs.push_back(ItemCallIr{call(o->call, {}), text(item), item.loc});
       } else if (const auto* k = std::get_if<ast::KernelDecl>(&item.node)) {

@@ -201,12 +201,32 @@ Output decisions(std::int32_t false_est, std::int32_t hidden) { return Decisions
 
 Prior mln() { return MlnPrior{}; }
 
+Likelihood& Likelihood::operator*=(const Likelihood& other) {
+  if (other.keypoint_term) {
+    static_cast<KeypointGaussian&>(*this) = other;
+    keypoint_term = true;
+  }
+  if (other.cloud) cloud = other.cloud;
+  return *this;
+}
+
 namespace keypoints {
 Likelihood gaussian(double sigma, bool robust, double outlier_px, double estimate_sigma_t, double estimate_sigma_r,
                     bool sigma_from_scene) {
-  return KeypointGaussian{sigma, robust, outlier_px, estimate_sigma_t, estimate_sigma_r, sigma_from_scene};
+  Likelihood l;
+  static_cast<KeypointGaussian&>(l) = KeypointGaussian{sigma, robust, outlier_px, estimate_sigma_t, estimate_sigma_r, sigma_from_scene};
+  l.keypoint_term = true;
+  return l;
 }
 }  // namespace keypoints
+
+namespace cloud {
+Likelihood surface(double sigma, bool robust, double outlier, double free_space_cost) {
+  Likelihood l;
+  l.cloud = CloudSurface{sigma, robust, outlier, free_space_cost};
+  return l;
+}
+}  // namespace cloud
 
 namespace pose {
 Source perturb(double sigma_t, double sigma_r, int candidates) { return PosePerturb{sigma_t, sigma_r, candidates}; }

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <variant>
 
 #include "runtime/domain/binding.h"
@@ -40,7 +41,22 @@ struct KeypointGaussian {
   // (pixel_noise.h; kit::scene_likelihood).
   bool sigma_from_scene = false;
 };
-using Likelihood = KeypointGaussian;
+// Likelihood `cloud.surface` (cloud_likelihood.h): a depth cloud's points on their boxes'
+// surfaces, and, with free_space_cost > 0, the rays a box blocks.
+struct CloudSurface {
+  double sigma = 0.004;           // [m]
+  bool robust = true;
+  double outlier = 0.02;          // [m] cap of a point's distance in the robust variant
+  double free_space_cost = 0.0;   // log-likelihood per blocked ray; 0: off
+};
+// A domain's likelihood: the product of its likelihood items (the generated binding writes
+// `b.likelihood = first; b.likelihood *= next; ...`), each block at most once (ksmc check).
+// The keypoint fields are those of `keypoints.gaussian` when it is one of them.
+struct Likelihood : KeypointGaussian {
+  bool keypoint_term = false;          // keypoints.gaussian is a factor
+  std::optional<CloudSurface> cloud;   // cloud.surface is a factor
+  Likelihood& operator*=(const Likelihood& other);
+};
 
 // Proposal source `pose.perturb` (the DDMCMC refine move, refine_kernel.h).
 struct PosePerturb {
@@ -113,6 +129,10 @@ namespace keypoints {
 Likelihood gaussian(double sigma, bool robust, double outlier_px, double estimate_sigma_t, double estimate_sigma_r,
                     bool sigma_from_scene);
 }  // namespace keypoints
+
+namespace cloud {
+Likelihood surface(double sigma, bool robust, double outlier, double free_space_cost);
+}  // namespace cloud
 
 namespace pose {
 Source perturb(double sigma_t, double sigma_r, int candidates);

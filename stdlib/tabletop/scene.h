@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,8 @@
 #include "stdlib/tabletop/pose.h"
 
 namespace ksmc::stdlib::tabletop {
+
+struct CloudObservation;  // cloud_likelihood.h
 
 inline constexpr const char* kTableId = "table";
 
@@ -50,6 +53,9 @@ struct Scene {
   TableSlab table;
   std::filesystem::path image;      // optional background image (absolute or cwd-relative), may be empty
   std::vector<SceneObject> objects; // file order; ids unique, never "table"
+  // What the --cloud front end saw (each object's points, the cloud's rays), for the
+  // `cloud.surface` likelihood; null for a scene read from scene.json.
+  std::shared_ptr<const CloudObservation> cloud;
 
   // Object pose in the camera frame.
   [[nodiscard]] Pose camera_pose(const SceneObject& o) const { return table_in_camera.compose(o.pose); }

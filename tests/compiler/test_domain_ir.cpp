@@ -85,9 +85,9 @@ TEST_CASE("domain IR: calls bound in signature order with defaults and base unit
   CHECK(p.call.args[0].value.kind == lower::ValueIr::Kind::Call);
   CHECK(p.call.args[0].value.call->block == "wall_length_diff");
   CHECK(p.call.args[1].value.real == Approx(0.3));
-  REQUIRE(ir.likelihood);
-  CHECK(ir.likelihood->call.args[1].value.preds == std::vector<std::string>{"Hall"});
-  CHECK(ir.likelihood->call.args[2].defaulted);
+  REQUIRE(ir.likelihoods.size() == 1);
+  CHECK(ir.likelihoods[0].call.args[1].value.preds == std::vector<std::string>{"Hall"});
+  CHECK(ir.likelihoods[0].call.args[2].defaulted);
   REQUIRE(ir.kernels.size() == 2);
   CHECK(ir.kernels[0].forward_move == "birth");
   CHECK(ir.kernels[0].reverse_move == "death");

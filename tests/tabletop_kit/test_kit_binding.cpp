@@ -42,6 +42,14 @@ TEST_CASE("the generated binding is the fixture's copy of domains/tabletop.ksm, 
   CHECK(g.likelihood.robust == f.likelihood.robust);
   CHECK(g.likelihood.outlier_px == f.likelihood.outlier_px);
   CHECK(g.likelihood.sigma_from_scene == f.likelihood.sigma_from_scene);
+  CHECK(g.likelihood.keypoint_term == f.likelihood.keypoint_term);
+  REQUIRE(g.likelihood.cloud.has_value() == f.likelihood.cloud.has_value());
+  if (g.likelihood.cloud) {
+    CHECK(g.likelihood.cloud->sigma == f.likelihood.cloud->sigma);
+    CHECK(g.likelihood.cloud->robust == f.likelihood.cloud->robust);
+    CHECK(g.likelihood.cloud->outlier == f.likelihood.cloud->outlier);
+    CHECK(g.likelihood.cloud->free_space_cost == f.likelihood.cloud->free_space_cost);
+  }
   REQUIRE(g.outputs.size() == 1);
   CHECK(g.outputs[0].false_est == f.outputs[0].false_est);
   CHECK(g.outputs[0].hidden == f.outputs[0].hidden);

@@ -4,12 +4,13 @@
 
 #include <random>
 
-#include "stdlib/tabletop/perception/cloud_likelihood.h"
+#include "stdlib/tabletop/cloud_likelihood.h"
 #include "stdlib/tabletop/perception/registration.h"
 #include "synthetic_cloud.h"
 
 using namespace ksmc::stdlib::tabletop::perception;
 using ksmc::stdlib::tabletop::Obb;
+using namespace ksmc::stdlib::tabletop;
 
 namespace {
 Obb upright(const Eigen::Vector3d& c, const Eigen::Vector3d& size, double yaw = 0.0) {
@@ -120,4 +121,35 @@ TEST_CASE("free space: a box where the sensor sees through it is penalised", "[p
   away.center = Eigen::Vector3d(0.6, 0.6, 0.03);
   CHECK(cl.update(1, away) == Approx(fs.cost * static_cast<double>(blocked)));
   CHECK(cl.total() == Approx(cl.term(0)));
+}
+
+TEST_CASE("free space: the ray index counts what the full scan counts", "[perception][likelihood]") {
+  // A rendered view of three boxes on a table; random boxes anywhere, also around and
+  // behind the sensor.
+  FreeSpace fs;
+  fs.sensor = Eigen::Vector3d(0.35, -0.5, 0.55);
+  const auto box_at = [](double x, double y, const Eigen::Vector3d& size) {
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    pose.translation() = Eigen::Vector3d(x, y, 0.5 * size.z());
+    return ksmc::tests::perception::CastBox{pose, size};
+  };
+  fs.points = ksmc::tests::perception::cast_view(
+      fs.sensor, Eigen::Vector3d(0.0, 0.0, 0.05), 0.5, 0.004,
+      {box_at(0.0, 0.0, {0.1, 0.1, 0.1}), box_at(-0.15, 0.1, {0.2, 0.06, 0.05}), box_at(0.12, 0.12, {0.05, 0.08, 0.2})},
+      0.6, 0.4);
+  REQUIRE(fs.points.size() > 10000);
+  const RayIndex index(fs);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int crossed = 0;
+  for (int k = 0; k < 300; ++k) {
+    const double reach = k < 250 ? 0.35 : 1.2;  // the last 50 also around the sensor
+    Obb box = upright(Eigen::Vector3d(reach * u(rng), reach * u(rng), 0.15 + 0.15 * u(rng) + (k >= 250 ? 0.4 : 0.0)),
+                      Eigen::Vector3d(0.03 + 0.1 * std::abs(u(rng)), 0.03 + 0.1 * std::abs(u(rng)), 0.03 + 0.1 * std::abs(u(rng))));
+    box.axes = Eigen::AngleAxisd(3.0 * u(rng), Eigen::Vector3d(u(rng), u(rng), u(rng) + 2.0).normalized()).toRotationMatrix();
+    const std::size_t full = see_through_count(box, fs);
+    CHECK(index.see_through_count(box) == full);
+    crossed += full > 0;
+  }
+  CHECK(crossed > 100);  // the boxes were seen through, not all beside the view
 }

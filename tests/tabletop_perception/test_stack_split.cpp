@@ -10,6 +10,7 @@
 using namespace ksmc::stdlib::tabletop::perception;
 using ksmc::tests::perception::add_box;
 using ksmc::tests::perception::CastBox;
+using ksmc::stdlib::tabletop::FreeSpace;
 
 namespace {
 // Box surface without the faces a camera above cannot see (the bottom) shifted up by `lift`.

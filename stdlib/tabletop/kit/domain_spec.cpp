@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <iostream>
+#include <memory>
 #include <stdexcept>
 #include <span>
 #include <utility>
@@ -12,6 +13,7 @@
 
 #include "runtime/domain/kernels.h"
 #include "runtime/mcmc/engine.h"
+#include "stdlib/tabletop/cloud_likelihood.h"
 #include "stdlib/tabletop/graph_dot.h"
 #include "stdlib/tabletop/hope_import.h"
 #include "stdlib/tabletop/kit/fit_kernel.h"
@@ -87,6 +89,15 @@ Scene load_cloud_input(const cli::DomainInput& in, std::string& scene_json) {
   options.stage = [&in](std::string_view what) { cli::stage(in, what); };
   perception::CloudScene cs = perception::scene_from_points(points, file, options);
   scene_json = perception::scene_json_text(cs.scene);
+  // What the front end saw stays with the scene for `cloud.surface`: each box's points and
+  // the cloud's rays (table frame).
+  auto seen = std::make_shared<CloudObservation>();
+  seen->object_points = std::move(cs.object_points);
+  FreeSpace rays;
+  rays.points = std::move(cs.cloud_in_table);
+  rays.sensor = cs.sensor_in_table;
+  seen->rays = RayIndex(std::move(rays));
+  cs.scene.cloud = std::move(seen);
   return std::move(cs.scene);
 #else
   (void)in;
@@ -198,13 +209,19 @@ KitSetup make_setup(const blocks::Binding& binding, std::shared_ptr<const Scene>
   for (const auto& e : binding.extractors) extractors.push_back(e.text);
   k.setup.summary_extra = {{"objects", scene->objects.size()},
                            {"extractors", std::move(extractors)},
-                           {"likelihood",
-                            {{"sigma_px", binding.likelihood.sigma_px},
-                             {"robust", binding.likelihood.robust},
-                             {"outlier_px", binding.likelihood.outlier_px},
-                             {"sigma_from_scene", binding.likelihood.sigma_from_scene}}}};
-  if (binding.likelihood.sigma_from_scene) {  // what this scene is scored with
-    const blocks::Likelihood used = scene_likelihood(*scene, binding.likelihood);
+                           {"likelihood", nlohmann::json::object()}};
+  nlohmann::json& likelihood = k.setup.summary_extra["likelihood"];
+  if (binding.likelihood.keypoint_term)
+    likelihood.update({{"sigma_px", binding.likelihood.sigma_px},
+                       {"robust", binding.likelihood.robust},
+                       {"outlier_px", binding.likelihood.outlier_px},
+                       {"sigma_from_scene", binding.likelihood.sigma_from_scene}});
+  if (const auto& c = binding.likelihood.cloud) {
+    likelihood["cloud"] = {{"sigma_m", c->sigma}, {"robust", c->robust}, {"outlier_m", c->outlier},
+                           {"free_space_cost", c->free_space_cost}, {"scene_has_cloud", scene->cloud != nullptr}};
+  }
+  if (binding.likelihood.keypoint_term && binding.likelihood.sigma_from_scene) {  // what this scene is scored with
+    const blocks::KeypointGaussian used = scene_likelihood(*scene, binding.likelihood);
     k.setup.summary_extra["likelihood"]["scene_sigma_px"] = used.sigma_px;
     k.setup.summary_extra["likelihood"]["scene_outlier_px"] = used.outlier_px;
   }

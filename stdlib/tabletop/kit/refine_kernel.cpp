@@ -21,8 +21,9 @@ RefineKernel::RefineKernel(const runtime::domain::KernelDecl<blocks::Move, block
 }
 
 runtime::mcmc::Proposal RefineKernel::propose_typed(TabletopModel& model, runtime::mcmc::Rng& rng) const {
-  // Data-driven: only objects with keypoint observations can be refined (an object without
-  // any has a flat likelihood, and moving it would follow the prior alone).
+  // Data-driven: only objects with observations (keypoints, or cloud points under
+  // `cloud.surface`) can be refined (an object without any has a flat likelihood, and
+  // moving it would follow the prior alone).
   const std::vector<std::size_t>& movable = model.observed_objects();
   const std::size_t n = movable.size();
   if (n == 0) return runtime::mcmc::Proposal::declined();

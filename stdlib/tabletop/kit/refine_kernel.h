@@ -1,7 +1,8 @@
 // The DDMCMC `refine` move of §4.9 (pose.perturb): choose one object uniformly among the
-// objects with keypoint observations (an object without any has a flat likelihood: moving
-// it would follow the prior alone), draw `candidates` Gaussian perturbations of its pose
-// (σ_t, σ_r), weight them and the current pose by the object's keypoint likelihood, and
+// objects with observations (keypoints, or cloud points under `cloud.surface`; an object
+// without any has a flat likelihood: moving it would follow the prior alone), draw
+// `candidates` Gaussian perturbations of its pose (σ_t, σ_r), weight them and the current
+// pose by the object's likelihood, and
 // propose the best one. The current pose e_{t,0} is one of the weighted poses (its weight
 // is in the denominator of eqs. 4.6/4.7); when it has the best weight the move keeps it
 // (declined: M_{t+1} = M_t), so the likelihood of the moved object never decreases

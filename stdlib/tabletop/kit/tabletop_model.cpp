@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "runtime/mln/mcsat.h"
+#include "stdlib/tabletop/cloud_likelihood.h"
 #include "stdlib/tabletop/kit/kit_likelihood.h"
 
 namespace ksmc::stdlib::tabletop::kit {
@@ -46,12 +47,19 @@ TabletopModel::TabletopModel(std::shared_ptr<const Scene> initial, const blocks:
       input_(initial),
       scene_(*initial),
       sem_(binding, semantic_options(options)) {
+  const CloudObservation* cloud = cloud_term();
   for (std::size_t i = 0; i < scene().objects.size(); ++i)
-    if (!scene().objects[i].keypoints_model.empty()) observed_.push_back(i);
-  // From the fits the scene caches for the fit kernel: each object is fitted once.
-  likelihood_ = scene_likelihood(*initial, binding.likelihood, [this](std::size_t i) -> const KeypointFit& {
-    return scene_.fit(blocks::Scene::body_of_object(i));
-  });
+    if ((binding.likelihood.keypoint_term && !scene().objects[i].keypoints_model.empty()) ||
+        (cloud != nullptr && i < cloud->object_points.size() && !cloud->object_points[i].empty()))
+      observed_.push_back(i);
+  likelihood_ = binding.likelihood;
+  if (binding.likelihood.keypoint_term) {
+    // From the fits the scene caches for the fit kernel: each object is fitted once.
+    static_cast<blocks::KeypointGaussian&>(likelihood_) =
+        scene_likelihood(*initial, binding.likelihood, [this](std::size_t i) -> const KeypointFit& {
+          return scene_.fit(blocks::Scene::body_of_object(i));
+        });
+  }
   recompute_all();
 }
 
@@ -75,8 +83,23 @@ void TabletopModel::recompute_all() {
   moving_ = false;
 }
 
+const CloudObservation* TabletopModel::cloud_term() const {
+  if (!binding_.likelihood.cloud || scene().cloud == nullptr) return nullptr;
+  if (scene().cloud->object_points.size() != scene().objects.size())
+    throw std::invalid_argument(fmt::format("cloud.surface: the scene's cloud has point sets for {} objects, the scene has {}",
+                                            scene().cloud->object_points.size(), scene().objects.size()));
+  return scene().cloud.get();
+}
+
 double TabletopModel::object_log_likelihood_at(std::size_t object, const Pose& pose) const {
-  double ll = kit::object_log_likelihood(scene(), scene().objects.at(object), pose, likelihood_);
+  const SceneObject& o = scene().objects.at(object);
+  double ll = likelihood_.keypoint_term ? kit::object_log_likelihood(scene(), o, pose, likelihood_) : 0.0;
+  if (const CloudObservation* cloud = cloud_term()) {  // cloud.surface
+    const blocks::CloudSurface& c = *likelihood_.cloud;
+    const Obb box = Obb::from_pose(pose, o.size);
+    ll += cloud_log_likelihood(cloud->object_points[object], box, {c.sigma, c.robust, c.outlier});
+    if (c.free_space_cost > 0.0) ll -= c.free_space_cost * static_cast<double>(cloud->rays.see_through_count(box));
+  }
   // The input pose estimate as a measurement (keypoints.gaussian's estimate_sigma_*).
   const Pose& estimate = input_->objects[object].pose;
   const double sigma_t = options_.pose_sigma_t.value_or(binding_.likelihood.estimate_sigma_t);

@@ -1,6 +1,8 @@
 // The table-top posterior of eq. 4.1 as an mcmc::Model, driven by a domain's binding:
 //   log p(M|D) = log p(D|M) + log p(M)
 //   log p(D|M) = Σ_o keypoint log-likelihood of o at its pose (eq. 4.4, kit_likelihood.h)
+//                + Σ_o cloud log-likelihood of o's points and the rays its box blocks
+//                (`cloud.surface`, cloud_likelihood.h; scenes of the --cloud front end)
 //   log p(M)   = with `prior mln`: eq. 4.3 for the scene graph of the poses, Σ w n of the
 //                world made of the extracted evidence and the most probable query atoms (or,
 //                with PriorQuantity::log_z, log Z over the query atoms); plus the conditional
@@ -69,20 +71,23 @@ class TabletopModel : public runtime::mcmc::Model {
   const runtime::domain::Semantics<blocks::Scene>& semantics() const noexcept { return sem_; }
   const blocks::Binding& binding() const noexcept { return binding_; }
   const KitOptions& options() const noexcept { return options_; }
-  // The keypoint likelihood this scene is scored with (the binding's, σ from the scene when
-  // it declares sigma_from_scene; kit_likelihood.h).
+  // The likelihood this scene is scored with (the binding's; the keypoint σ from the scene
+  // when it declares sigma_from_scene; kit_likelihood.h).
   const blocks::Likelihood& likelihood() const noexcept { return likelihood_; }
   // Object `object`'s input pose estimate (the chain's start and the pose-estimate term's mean).
   const Pose& input_pose(std::size_t object) const { return input_->objects.at(object).pose; }
   double object_log_likelihood(std::size_t object) const { return object_ll_[object]; }
   double object_log_likelihood_at(std::size_t object, const Pose& pose) const;
-  // Indices of the objects with at least one keypoint (what the refine move may pick).
+  // Indices of the objects with at least one keypoint, or cloud points when the domain's
+  // likelihood has `cloud.surface` (what the refine move may pick).
   const std::vector<std::size_t>& observed_objects() const noexcept { return observed_; }
   // Constants re-extracted by the last move (the moved body first).
   const std::vector<std::int32_t>& last_changed() const noexcept { return changed_; }
 
  private:
   void recompute_all();
+  // The scene's cloud when the likelihood has `cloud.surface` and the scene came with one.
+  const CloudObservation* cloud_term() const;
   double prior_of(const runtime::domain::Outcome& o) const;
 
   const blocks::Binding& binding_;

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "stdlib/tabletop/perception/box_fit.h"
-#include "stdlib/tabletop/perception/cloud_likelihood.h"
+#include "stdlib/tabletop/cloud_likelihood.h"
 
 namespace ksmc::stdlib::tabletop::perception {
 

@@ -1,5 +1,5 @@
-// Cloud likelihood for scenes without keypoints: each point of an object's cluster is a
-// Gaussian observation of the box surface,
+// Cloud likelihood (`cloud.surface` of stdlib/tabletop.ksm; the --cloud front end's scenes):
+// each point of an object's cluster is a Gaussian observation of the box surface,
 //     log p(p | box) = -d(p, surface)^2 / (2 sigma^2) - log(sigma sqrt(2 pi)),
 // d = distance to the nearest face (inside or outside the box). The robust variant caps d
 // at `outlier_distance` (a point that far costs a constant). Evaluated per object: a move
@@ -8,13 +8,17 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
-#include "stdlib/tabletop/obb.h"
-#include "stdlib/tabletop/perception/cloud_io.h"
+#include <Eigen/Core>
 
-namespace ksmc::stdlib::tabletop::perception {
+#include "stdlib/tabletop/obb.h"
+
+namespace ksmc::stdlib::tabletop {
+
+using Points = std::vector<Eigen::Vector3d>;
 
 struct CloudLikelihoodParams {
   double sigma = 0.004;              // m
@@ -42,6 +46,38 @@ struct FreeSpace {
 // Number of rays sensor -> point that pass through the box before point - margin.
 std::size_t see_through_count(const Obb& box, const FreeSpace& free_space);
 
+// The same count, reading only the rays whose direction can meet the box: the rays are
+// binned on a grid over the sensor's view (central projection onto the plane normal to
+// their mean direction), and a box in front of the sensor is seen within the bounds of its
+// projected corners. A box reaching behind the sensor's view plane reads every ray.
+class RayIndex {
+ public:
+  RayIndex() = default;
+  explicit RayIndex(FreeSpace free_space, double cell = 0.005);  // cell: grid step (tangent units)
+
+  [[nodiscard]] std::size_t see_through_count(const Obb& box) const;
+  [[nodiscard]] const FreeSpace& free_space() const noexcept { return fs_; }
+
+ private:
+  bool crosses(const Obb& box, const Eigen::Vector3d& origin_in_box, std::size_t ray) const;
+
+  FreeSpace fs_;
+  Eigen::Matrix3d frame_ = Eigen::Matrix3d::Identity();  // columns e1, e2, c (c: mean direction)
+  double cell_ = 0.005;
+  double u0_ = 0.0, v0_ = 0.0;  // grid origin
+  int nu_ = 0, nv_ = 0;
+  std::vector<std::uint32_t> start_;  // per cell, into order_ (CSR, nu * nv + 1 entries)
+  std::vector<std::uint32_t> order_;  // ray indices by cell
+  std::vector<std::uint32_t> behind_; // rays not in front of the view plane: always read
+};
+
+// What the cloud front end saw, kept with its scene for `cloud.surface`: each object's own
+// points and the whole cloud's rays (table frame).
+struct CloudObservation {
+  std::vector<Points> object_points;  // per scene object (file order)
+  RayIndex rays;
+};
+
 // Incremental evaluation over the objects of a scene (table frame).
 class CloudLikelihood {
  public:
@@ -60,8 +96,8 @@ class CloudLikelihood {
   std::vector<Points> points_;
   std::vector<double> terms_;
   CloudLikelihoodParams params_;
-  std::optional<FreeSpace> free_space_;
+  std::optional<RayIndex> free_space_;
   double total_ = 0.0;
 };
 
-}  // namespace ksmc::stdlib::tabletop::perception
+}  // namespace ksmc::stdlib::tabletop

@@ -1,0 +1,183 @@
+#include "stdlib/tabletop/cloud_likelihood.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace ksmc::stdlib::tabletop {
+
+double surface_distance(const Obb& box, const Eigen::Vector3d& p) {
+  const Eigen::Vector3d local = box.axes.transpose() * (p - box.center);
+  const Eigen::Vector3d excess = local.cwiseAbs() - box.half;  // > 0 outside along that axis
+  if (excess.maxCoeff() > 0.0) return excess.cwiseMax(0.0).norm();
+  return -excess.maxCoeff();  // inside: distance to the nearest face
+}
+
+double cloud_log_likelihood(const Points& points, const Obb& box, const CloudLikelihoodParams& params) {
+  const double norm = std::log(params.sigma * std::sqrt(2.0 * std::numbers::pi));
+  const double inv = 1.0 / (2.0 * params.sigma * params.sigma);
+  double sum = 0.0;
+  for (const auto& p : points) {
+    double d = surface_distance(box, p);
+    if (params.robust) d = std::min(d, params.outlier_distance);
+    sum -= d * d * inv + norm;
+  }
+  return sum;
+}
+
+namespace {
+
+// Whether the segment sensor -> p (stopping `margin` before p) passes through the box;
+// `o` is the sensor in the box frame.
+bool segment_crosses(const Obb& box, const Eigen::Vector3d& o, const Eigen::Vector3d& sensor, const Eigen::Vector3d& p,
+                     double margin) {
+  const Eigen::Vector3d seg = p - sensor;
+  const double len = seg.norm();
+  if (len <= margin) return false;
+  const double reach = 1.0 - margin / len;  // segment parameter where the check stops
+  const Eigen::Vector3d d = box.axes.transpose() * seg;
+  double enter = 0.0, leave = reach;
+  for (int k = 0; k < 3; ++k) {
+    if (std::abs(d[k]) < 1e-15) {
+      if (std::abs(o[k]) > box.half[k]) return false;
+      continue;
+    }
+    double s0 = (-box.half[k] - o[k]) / d[k], s1 = (box.half[k] - o[k]) / d[k];
+    if (s0 > s1) std::swap(s0, s1);
+    enter = std::max(enter, s0);
+    leave = std::min(leave, s1);
+    if (enter > leave) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::size_t see_through_count(const Obb& box, const FreeSpace& fs) {
+  const Eigen::Vector3d o = box.axes.transpose() * (fs.sensor - box.center);
+  std::size_t count = 0;
+  for (const auto& p : fs.points) count += segment_crosses(box, o, fs.sensor, p, fs.margin) ? 1 : 0;
+  return count;
+}
+
+RayIndex::RayIndex(FreeSpace free_space, double cell) : fs_(std::move(free_space)), cell_(cell) {
+  if (!(cell_ > 0.0)) throw std::invalid_argument("RayIndex: the cell must be > 0");
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const auto& p : fs_.points) {
+    const Eigen::Vector3d d = p - fs_.sensor;
+    if (d.norm() > 0.0) mean += d.normalized();
+  }
+  const Eigen::Vector3d c = mean.norm() > 0.0 ? Eigen::Vector3d(mean.normalized()) : Eigen::Vector3d(Eigen::Vector3d::UnitZ());
+  const Eigen::Vector3d e1 = c.unitOrthogonal();
+  frame_.col(0) = e1;
+  frame_.col(1) = c.cross(e1);
+  frame_.col(2) = c;
+  // Projected coordinates; rays at more than ~84 degrees from c are read on every query.
+  std::vector<Eigen::Vector2d> uv(fs_.points.size());
+  std::vector<char> front(fs_.points.size(), 0);
+  double umin = 0.0, umax = 0.0, vmin = 0.0, vmax = 0.0;
+  bool any = false;
+  for (std::size_t i = 0; i < fs_.points.size(); ++i) {
+    const Eigen::Vector3d l = frame_.transpose() * (fs_.points[i] - fs_.sensor);
+    if (!(l.z() > 0.1 * l.norm())) {
+      behind_.push_back(static_cast<std::uint32_t>(i));
+      continue;
+    }
+    front[i] = 1;
+    uv[i] = Eigen::Vector2d(l.x() / l.z(), l.y() / l.z());
+    umin = any ? std::min(umin, uv[i].x()) : uv[i].x();
+    umax = any ? std::max(umax, uv[i].x()) : uv[i].x();
+    vmin = any ? std::min(vmin, uv[i].y()) : uv[i].y();
+    vmax = any ? std::max(vmax, uv[i].y()) : uv[i].y();
+    any = true;
+  }
+  // At most about a million cells: a wide view gets coarser cells.
+  while (any && ((umax - umin) / cell_ + 1.0) * ((vmax - vmin) / cell_ + 1.0) > 1e6) cell_ *= 2.0;
+  u0_ = umin;
+  v0_ = vmin;
+  nu_ = any ? static_cast<int>((umax - umin) / cell_) + 1 : 0;
+  nv_ = any ? static_cast<int>((vmax - vmin) / cell_) + 1 : 0;
+  std::vector<std::uint32_t> cell_of(fs_.points.size(), 0);
+  start_.assign(static_cast<std::size_t>(nu_) * static_cast<std::size_t>(nv_) + 1, 0);
+  for (std::size_t i = 0; i < fs_.points.size(); ++i) {
+    if (!front[i]) continue;
+    const int a = std::clamp(static_cast<int>((uv[i].x() - u0_) / cell_), 0, nu_ - 1);
+    const int b = std::clamp(static_cast<int>((uv[i].y() - v0_) / cell_), 0, nv_ - 1);
+    cell_of[i] = static_cast<std::uint32_t>(b * nu_ + a);
+    ++start_[cell_of[i] + 1];
+  }
+  for (std::size_t k = 1; k < start_.size(); ++k) start_[k] += start_[k - 1];
+  order_.resize(fs_.points.size() - behind_.size());
+  std::vector<std::uint32_t> next(start_.begin(), start_.end() - 1);
+  for (std::size_t i = 0; i < fs_.points.size(); ++i)
+    if (front[i]) order_[next[cell_of[i]]++] = static_cast<std::uint32_t>(i);
+}
+
+bool RayIndex::crosses(const Obb& box, const Eigen::Vector3d& origin_in_box, std::size_t ray) const {
+  return segment_crosses(box, origin_in_box, fs_.sensor, fs_.points[ray], fs_.margin);
+}
+
+std::size_t RayIndex::see_through_count(const Obb& box) const {
+  const Eigen::Vector3d o = box.axes.transpose() * (fs_.sensor - box.center);
+  std::size_t count = 0;
+  for (const std::uint32_t r : behind_) count += crosses(box, o, r) ? 1 : 0;
+  if (nu_ == 0) return count;
+  double umin = 0.0, umax = 0.0, vmin = 0.0, vmax = 0.0;
+  for (int k = 0; k < 8; ++k) {
+    const Eigen::Vector3d l = frame_.transpose() * (box.vertex(k) - fs_.sensor);
+    if (!(l.z() > 1e-9)) {  // reaches behind the view plane: read every ray in front
+      for (const std::uint32_t r : order_) count += crosses(box, o, r) ? 1 : 0;
+      return count;
+    }
+    const double u = l.x() / l.z(), v = l.y() / l.z();
+    umin = k == 0 ? u : std::min(umin, u);
+    umax = k == 0 ? u : std::max(umax, u);
+    vmin = k == 0 ? v : std::min(vmin, v);
+    vmax = k == 0 ? v : std::max(vmax, v);
+  }
+  // Grid cells of the bounds, one cell of slack; clamped as doubles (no int overflow).
+  const auto at = [this](double x, double origin, int n, int slack) {
+    return static_cast<int>(std::clamp(std::floor((x - origin) / cell_) + slack, 0.0, static_cast<double>(n - 1)));
+  };
+  if (umax < u0_ - cell_ || vmax < v0_ - cell_ || umin > u0_ + (nu_ + 1) * cell_ || vmin > v0_ + (nv_ + 1) * cell_)
+    return count;  // seen nowhere in the view
+  const int a0 = at(umin, u0_, nu_, -1), a1 = at(umax, u0_, nu_, 1);
+  const int b0 = at(vmin, v0_, nv_, -1), b1 = at(vmax, v0_, nv_, 1);
+  for (int b = b0; b <= b1; ++b) {
+    const std::size_t row = static_cast<std::size_t>(b) * static_cast<std::size_t>(nu_);
+    for (std::size_t k = start_[row + static_cast<std::size_t>(a0)]; k < start_[row + static_cast<std::size_t>(a1) + 1]; ++k)
+      count += crosses(box, o, order_[k]) ? 1 : 0;
+  }
+  return count;
+}
+
+CloudLikelihood::CloudLikelihood(std::vector<Points> object_points, const std::vector<Obb>& boxes,
+                                 CloudLikelihoodParams params, std::optional<FreeSpace> free_space)
+    : points_(std::move(object_points)), params_(params) {
+  if (free_space) free_space_.emplace(std::move(*free_space));
+  if (points_.size() != boxes.size())
+    throw std::invalid_argument("CloudLikelihood: one point set per box is needed");
+  if (!(params_.sigma > 0.0) || !(params_.outlier_distance > 0.0))
+    throw std::invalid_argument("CloudLikelihood: sigma and outlier_distance must be > 0");
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    terms_.push_back(evaluate(i, boxes[i]));
+    total_ += terms_.back();
+  }
+}
+
+double CloudLikelihood::evaluate(std::size_t object, const Obb& box) const {
+  double term = cloud_log_likelihood(points_.at(object), box, params_);
+  if (free_space_) term -= free_space_->free_space().cost * static_cast<double>(free_space_->see_through_count(box));
+  return term;
+}
+
+double CloudLikelihood::update(std::size_t object, const Obb& box) {
+  const double next = evaluate(object, box);
+  const double delta = next - terms_[object];
+  terms_[object] = next;
+  total_ += delta;
+  return delta;
+}
+
+}  // namespace ksmc::stdlib::tabletop
