@@ -75,7 +75,7 @@ class RayIndex {
 // points and the whole cloud's rays (table frame).
 struct CloudObservation {
   std::vector<Points> object_points;  // per scene object (file order)
-  RayIndex rays;
+  RayIndex rays;                      // empty (no ray) unless the domain prices free space
 };
 
 // Incremental evaluation over the objects of a scene (table frame).

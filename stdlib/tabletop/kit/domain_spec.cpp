@@ -75,7 +75,7 @@ void check_binding(const blocks::Binding& b) {
 
 // --cloud: the point-cloud front end (docs/perception.md). The boxes it found are written
 // with the run's other outputs as OUT/scene.json (`scene_json`).
-Scene load_cloud_input(const cli::DomainInput& in, std::string& scene_json) {
+Scene load_cloud_input(const cli::DomainInput& in, const blocks::Binding& binding, std::string& scene_json) {
 #ifdef KSMC_HAVE_PERCEPTION
   perception::CloudOptions options;
   try {
@@ -89,18 +89,24 @@ Scene load_cloud_input(const cli::DomainInput& in, std::string& scene_json) {
   options.stage = [&in](std::string_view what) { cli::stage(in, what); };
   perception::CloudScene cs = perception::scene_from_points(points, file, options);
   scene_json = perception::scene_json_text(cs.scene);
-  // What the front end saw stays with the scene for `cloud.surface`: each box's points and
-  // the cloud's rays (table frame).
-  auto seen = std::make_shared<CloudObservation>();
-  seen->object_points = std::move(cs.object_points);
-  FreeSpace rays;
-  rays.points = std::move(cs.cloud_in_table);
-  rays.sensor = cs.sensor_in_table;
-  seen->rays = RayIndex(std::move(rays));
-  cs.scene.cloud = std::move(seen);
+  // What the front end saw stays with the scene for `cloud.surface`: each box's points and,
+  // when the domain prices free space, the cloud's rays (table frame).
+  if (const auto& term = binding.likelihood.cloud) {
+    auto seen = std::make_shared<CloudObservation>();
+    seen->object_points = std::move(cs.object_points);
+    if (term->free_space_cost > 0.0) {
+      cli::stage(in, fmt::format("indexing {} rays for the free-space term", cs.cloud_in_table.size()));
+      FreeSpace rays;
+      rays.points = std::move(cs.cloud_in_table);
+      rays.sensor = cs.sensor_in_table;
+      seen->rays = RayIndex(std::move(rays));
+    }
+    cs.scene.cloud = std::move(seen);
+  }
   return std::move(cs.scene);
 #else
   (void)in;
+  (void)binding;
   (void)scene_json;
   throw cli::UsageError("--cloud: this tabletop was built without PCL");
 #endif
@@ -256,7 +262,7 @@ cli::DomainSpec domain_spec(const blocks::Binding& binding) {
                                   : stereo ? "--stereo replaces the scene.json input" : "expected one scene.json input");
     std::string scene_json;
     auto scene = std::make_shared<const Scene>(
-        cloud    ? load_cloud_input(in, scene_json)
+        cloud    ? load_cloud_input(in, *b, scene_json)
         : stereo ? load_stereo_input(in, scene_json)
                  : load_input(in.inputs.at(0), in.flags.text("input-format"), warnings));
     for (const auto& w : warnings) std::cerr << "tabletop: warning: " << w << "\n";
