@@ -7,11 +7,19 @@
 
 namespace ksmc::stdlib::tabletop {
 
+namespace {
+
+// A vector in the box's axes. Three dot products, not axes.transpose() * v: GCC inlines
+// these at -O2 in this file and left the general product out of line (2x the time per
+// point in bench_tabletop_perception's likelihood).
+Eigen::Vector3d in_box_axes(const Obb& box, const Eigen::Vector3d& v) {
+  return {box.axes.col(0).dot(v), box.axes.col(1).dot(v), box.axes.col(2).dot(v)};
+}
+
+}  // namespace
+
 double surface_distance(const Obb& box, const Eigen::Vector3d& p) {
-  // Three dot products, not the general product: GCC inlines these at -O2 in this file,
-  // the product it left out of line (2x the time per point, bench_tabletop_perception).
-  const Eigen::Vector3d d = p - box.center;
-  const Eigen::Vector3d local(box.axes.col(0).dot(d), box.axes.col(1).dot(d), box.axes.col(2).dot(d));
+  const Eigen::Vector3d local = in_box_axes(box, p - box.center);
   const Eigen::Vector3d excess = local.cwiseAbs() - box.half;  // > 0 outside along that axis
   if (excess.maxCoeff() > 0.0) return excess.cwiseMax(0.0).norm();
   return -excess.maxCoeff();  // inside: distance to the nearest face
@@ -39,7 +47,7 @@ bool segment_crosses(const Obb& box, const Eigen::Vector3d& o, const Eigen::Vect
   const double len = seg.norm();
   if (len <= margin) return false;
   const double reach = 1.0 - margin / len;  // segment parameter where the check stops
-  const Eigen::Vector3d d = box.axes.transpose() * seg;
+  const Eigen::Vector3d d = in_box_axes(box, seg);
   double enter = 0.0, leave = reach;
   for (int k = 0; k < 3; ++k) {
     if (std::abs(d[k]) < 1e-15) {
@@ -58,7 +66,7 @@ bool segment_crosses(const Obb& box, const Eigen::Vector3d& o, const Eigen::Vect
 }  // namespace
 
 std::size_t see_through_count(const Obb& box, const FreeSpace& fs) {
-  const Eigen::Vector3d o = box.axes.transpose() * (fs.sensor - box.center);
+  const Eigen::Vector3d o = in_box_axes(box, fs.sensor - box.center);
   std::size_t count = 0;
   for (const auto& p : fs.points) count += segment_crosses(box, o, fs.sensor, p, fs.margin) ? 1 : 0;
   return count;
@@ -122,7 +130,7 @@ bool RayIndex::crosses(const Obb& box, const Eigen::Vector3d& origin_in_box, std
 }
 
 std::size_t RayIndex::see_through_count(const Obb& box) const {
-  const Eigen::Vector3d o = box.axes.transpose() * (fs_.sensor - box.center);
+  const Eigen::Vector3d o = in_box_axes(box, fs_.sensor - box.center);
   std::size_t count = 0;
   for (const std::uint32_t r : behind_) count += crosses(box, o, r) ? 1 : 0;
   if (nu_ == 0) return count;
