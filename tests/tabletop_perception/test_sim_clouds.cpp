@@ -26,6 +26,27 @@ Scored front_end(const SimFrame& f, CloudOptions opt = {}) {
                   o.error.max_size() <= 0.01;
   return out;
 }
+
+// Boxes within tolerance over `scenes` frames of `fam` (seed `seed`), before (index 0) and
+// after (index 1) `after` changes the front end's options; and the true boxes seen.
+struct Compared {
+  int within[2] = {0, 0};
+  int boxes = 0;
+};
+template <class Change>
+Compared compare(const SimFamily& fam, std::uint64_t seed, std::uint64_t scenes, Change after) {
+  Compared c;
+  for (std::uint64_t s = 0; s < scenes; ++s) {
+    const SimFrame f = simulate_frame(ksmc::tools::tabletop_sim::scene_seed(seed, s), fam);
+    c.boxes += static_cast<int>(f.truth.size());
+    for (int k = 0; k < 2; ++k) {
+      CloudOptions opt;
+      after(opt, k == 1);
+      c.within[k] += front_end(f, opt).within;
+    }
+  }
+  return c;
+}
 }  // namespace
 
 TEST_CASE("simulated clouds: single boxes recovered within 1 cm / 3 degrees", "[perception][sim]") {
@@ -75,16 +96,9 @@ TEST_CASE("simulated clouds: leaning boxes get tilted boxes", "[perception][sim]
 TEST_CASE("simulated clouds: a box resting on a box it overhangs is found by the free-space test", "[perception][sim]") {
   SimFamily fam = sim_families(5, 10)[2];
   REQUIRE(fam.name == "stacks");
-  int within[2] = {0, 0}, boxes = 0;  // footprint test alone, with the free-space test
-  for (std::uint64_t s = 0; s < 10; ++s) {
-    const SimFrame f = simulate_frame(ksmc::tools::tabletop_sim::scene_seed(1, s), fam);
-    boxes += static_cast<int>(f.truth.size());
-    for (int free_space = 0; free_space < 2; ++free_space) {
-      CloudOptions opt;
-      opt.fit.stacks.free_space = free_space == 1;
-      within[free_space] += front_end(f, opt).within;
-    }
-  }
+  const Compared c = compare(fam, 1, 10, [](CloudOptions& o, bool with) { o.fit.stacks.free_space = with; });
+  const int boxes = c.boxes;
+  const int* within = c.within;  // footprint test alone, with the free-space test
   INFO("within tolerance of " << boxes << ": footprint test " << within[0] << ", with the free-space test " << within[1]);
   CHECK(within[1] >= within[0] + 3);
   CHECK(within[1] >= (boxes * 68) / 100);
@@ -93,16 +107,11 @@ TEST_CASE("simulated clouds: a box resting on a box it overhangs is found by the
 TEST_CASE("simulated clouds: a sensor of a quarter the resolution keeps most boxes (the derived tolerance)", "[perception][sim]") {
   SimFamily fam = sim_families(5, 6).front();
   fam.depth.stride = 4;  // every 4th pixel: 160 x 120 returns
-  int within[2] = {0, 0}, boxes = 0;  // fixed 8 mm tolerance, derived from the point spacing
-  for (std::uint64_t s = 0; s < 3; ++s) {
-    const SimFrame f = simulate_frame(ksmc::tools::tabletop_sim::scene_seed(7, s), fam);
-    boxes += static_cast<int>(f.truth.size());
-    for (int derived = 0; derived < 2; ++derived) {
-      CloudOptions opt;
-      if (!derived) opt.clusters.spacing_factor = 0.0;
-      within[derived] += front_end(f, opt).within;
-    }
-  }
+  const Compared c = compare(fam, 7, 3, [](CloudOptions& o, bool derived) {
+    if (!derived) o.clusters.spacing_factor = 0.0;
+  });
+  const int boxes = c.boxes;
+  const int* within = c.within;  // fixed 8 mm tolerance, derived from the point spacing
   INFO("within tolerance of " << boxes << ": fixed tolerance " << within[0] << ", derived " << within[1]);
   CHECK(within[1] >= within[0] + 3);
   CHECK(within[1] >= (boxes * 7) / 10);

@@ -46,20 +46,14 @@ int main(int argc, char** argv) {
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
-      if (a == "--verbose") {
-        verbose = true;
-        continue;
-      }
-      if (a == "--upright") {
-        upright = true;
-        continue;
-      }
-      if (a == "--footprint-only") {
-        footprint_only = true;
-        continue;
-      }
-      if (a == "--fixed-tolerance") {
-        fixed_tolerance = true;
+      // Switches (no value).
+      bool* const flag = a == "--verbose"           ? &verbose
+                         : a == "--upright"         ? &upright
+                         : a == "--footprint-only"  ? &footprint_only
+                         : a == "--fixed-tolerance" ? &fixed_tolerance
+                                                    : nullptr;
+      if (flag != nullptr) {
+        *flag = true;
         continue;
       }
       if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
