@@ -47,7 +47,8 @@ TabletopModel::TabletopModel(std::shared_ptr<const Scene> initial, const blocks:
       input_(initial),
       scene_(*initial),
       sem_(binding, semantic_options(options)) {
-  const CloudObservation* cloud = cloud_term();
+  cloud_ = cloud_term();
+  const CloudObservation* cloud = cloud_;
   for (std::size_t i = 0; i < scene().objects.size(); ++i)
     if ((binding.likelihood.keypoint_term && !scene().objects[i].keypoints_model.empty()) ||
         (cloud != nullptr && i < cloud->object_points.size() && !cloud->object_points[i].empty()))
@@ -94,7 +95,7 @@ const CloudObservation* TabletopModel::cloud_term() const {
 double TabletopModel::object_log_likelihood_at(std::size_t object, const Pose& pose) const {
   const SceneObject& o = scene().objects.at(object);
   double ll = likelihood_.keypoint_term ? kit::object_log_likelihood(scene(), o, pose, likelihood_) : 0.0;
-  if (const CloudObservation* cloud = cloud_term()) {  // cloud.surface
+  if (const CloudObservation* cloud = cloud_) {  // cloud.surface
     const blocks::CloudSurface& c = *likelihood_.cloud;
     const Obb box = Obb::from_pose(pose, o.size);
     ll += cloud_log_likelihood(cloud->object_points[object], box, {c.sigma, c.robust, c.outlier});

@@ -86,7 +86,8 @@ class TabletopModel : public runtime::mcmc::Model {
 
  private:
   void recompute_all();
-  // The scene's cloud when the likelihood has `cloud.surface` and the scene came with one.
+  // The scene's cloud when the likelihood has `cloud.surface` and the scene came with one
+  // (checked once, kept in cloud_).
   const CloudObservation* cloud_term() const;
   double prior_of(const runtime::domain::Outcome& o) const;
 
@@ -97,6 +98,7 @@ class TabletopModel : public runtime::mcmc::Model {
   blocks::Likelihood likelihood_;       // the binding's, with the scene's σ (scene_likelihood)
   blocks::Scene scene_;
   runtime::domain::Semantics<blocks::Scene> sem_;
+  const CloudObservation* cloud_ = nullptr;  // the scene's, owned by scene_'s input (shared)
   std::vector<std::size_t> observed_;
   std::vector<double> object_ll_;
   double log_likelihood_ = 0.0;
