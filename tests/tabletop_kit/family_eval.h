@@ -13,7 +13,7 @@
 
 #include "stdlib/tabletop/scene_io.h"
 #include "tools/tabletop_sim/scene_writer.h"
-#include "tests/tabletop_kit/e2e_support.h"
+#include "tests/tabletop_kit/family_score.h"
 #include "tools/tabletop_families/families.h"
 
 namespace ksmc::tests::tabletop_kit {
@@ -21,40 +21,19 @@ namespace ksmc::tests::tabletop_kit {
 namespace tf = ksmc::tools::tabletop_families;
 namespace sim = ksmc::tools::tabletop_sim;
 
-struct FamilyScore {
-  std::string family;
-  long scenes = 0;
-  Score score;
-  std::map<std::string, Counts> false_by_kind;  // recall of false estimates per generator kind
-  double undecided_percent() const {
-    return score.positives == 0 ? 0.0 : 100.0 * static_cast<double>(score.positive_undecided) / static_cast<double>(score.positives);
-  }
-};
-
-struct FamilyRun {
-  std::uint64_t seed = 2027;       // batch seed (scene seeds: tf::family_scene_seed)
-  long scenes = 12;
-  std::uint64_t iterations = 300;  // sampler iterations per scene (tabletop_family_eval: the binary's default)
-  kit::KitOptions options;
-};
-
 inline FamilyScore evaluate_family(const tf::Family& family, const blk::Binding& binding, const FamilyRun& run) {
   FamilyScore fs;
   fs.family = std::string(family.name);
   for (long i = 0; i < run.scenes; ++i) {
     const auto g = tf::generate(family, tf::family_scene_seed(family, run.seed, static_cast<std::uint64_t>(i)));
     const std::string name = fmt::format("{}/scene_{:03}.json", family.name, i);
-    auto load = tt::parse_scene(nlohmann::json::parse(sim::scene_json(g)), name, ".");
-    auto scene = std::make_shared<const tt::Scene>(std::move(load.scene));
-    const tt::TabletopResult r = run_kit(binding, scene, run.iterations, 1 + static_cast<std::uint64_t>(i), run.options);
-    score(r, nlohmann::json::parse(sim::truth_json(g)), fs.score);
+    const tt::TabletopResult r = add_scene(fs, binding, sim::scene_json(g), nlohmann::json::parse(sim::truth_json(g)), name, run, i);
     for (const auto& o : g.objects) {
       if (o.false_kind == sim::FalseKind::none) continue;
       const int k = r.scene.find(o.id);
       const auto decided = tt::decide(r.probabilities[static_cast<std::size_t>(k)].false_prob);
       fs.false_by_kind[std::string(sim::to_string(o.false_kind))].add(decided.value_or(false), true);
     }
-    ++fs.scenes;
   }
   return fs;
 }
@@ -90,35 +69,6 @@ inline long write_training_dbs(const tf::Family& family, const blk::Binding& bin
     ++written;
   }
   return written;
-}
-
-inline std::string prf(const Counts& c) {
-  return fmt::format("{:.2f} {:.2f} {:.2f}", c.precision(), c.recall(), c.f1());
-}
-
-inline std::string family_table(const std::vector<FamilyScore>& rows) {
-  std::string out =
-      "| family      | scenes | objects | false n | false P R F1   | hidden n | hidden P R F1  | support n | support P R F1 | contact n | contact P R F1 | undecided % |\n"
-      "|-------------|-------:|--------:|--------:|----------------|---------:|----------------|----------:|----------------|----------:|----------------|------------:|\n";
-  for (const auto& r : rows) {
-    const Score& s = r.score;
-    out += fmt::format("| {:<11} | {:>6} | {:>7} | {:>7} | {:<14} | {:>8} | {:<14} | {:>9} | {:<14} | {:>9} | {:<14} | {:>11.1f} |\n",
-                       r.family, r.scenes, s.objects, s.is_false.tp + s.is_false.fn, prf(s.is_false),
-                       s.is_hidden.tp + s.is_hidden.fn, prf(s.is_hidden), s.support.tp + s.support.fn, prf(s.support),
-                       s.contact.tp + s.contact.fn, prf(s.contact), r.undecided_percent());
-  }
-  return out;
-}
-
-// One line per family: recall of each false-estimate kind (found / generated).
-inline std::string false_kind_lines(const std::vector<FamilyScore>& rows) {
-  std::string out;
-  for (const auto& r : rows) {
-    out += fmt::format("{:<11} false kinds found:", r.family);
-    for (const auto& [kind, c] : r.false_by_kind) out += fmt::format(" {} {}/{}", kind, c.tp, c.tp + c.fn);
-    out += "\n";
-  }
-  return out;
 }
 
 }  // namespace ksmc::tests::tabletop_kit

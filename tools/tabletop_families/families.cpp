@@ -1,5 +1,7 @@
 #include "tools/tabletop_families/families.h"
 
+#include "tools/named_lookup.h"
+
 #include <array>
 #include <numbers>
 #include <stdexcept>
@@ -112,19 +114,11 @@ const std::array<Family, 9> kFamilies{{
 
 std::span<const Family> families() { return kFamilies; }
 
-const Family& family(std::string_view name) {
-  std::string known;
-  for (const auto& f : kFamilies) {
-    if (f.name == name) return f;
-    known += (known.empty() ? "" : ", ") + std::string(f.name);
-  }
-  throw std::invalid_argument(fmt::format("unknown family '{}' (known: {})", name, known));
-}
+const Family& family(std::string_view name) { return find_named(families(), name, "family"); }
 
 std::uint64_t family_scene_seed(const Family& f, std::uint64_t seed, std::uint64_t index) {
-  std::uint64_t h = 1469598103934665603ULL;  // FNV-1a of the name: families draw disjoint seeds
-  for (const char c : f.name) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ULL;
-  return sim::mix_seed(sim::mix_seed(seed, h), index);
+  // FNV-1a of the name: families draw disjoint seeds
+  return sim::mix_seed(sim::mix_seed(seed, name_hash(f.name)), index);
 }
 
 sim::GeneratorOptions scene_options(const Family& f, std::uint64_t scene_seed) {
