@@ -7,6 +7,7 @@
 // "Independent generator", lists the gaps).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <iostream>
 #include <set>
 
@@ -46,7 +47,15 @@ TEST_CASE("indep: worlds are physically what the truth says") {
           ++leaning;
           CHECK(std::abs(b.box.bottom()) < 1e-9);  // on the table
           CHECK(b.box.tilt() > 0.15);
-          CHECK(std::abs(ti::penetration(bodies[static_cast<std::size_t>(b.leans_on)].box, b.box)) < 1e-3);  // touches
+          const ti::Obb& wall = bodies[static_cast<std::size_t>(b.leans_on)].box;
+          CHECK(std::abs(ti::penetration(wall, b.box)) < 1e-3);  // touches
+          // Its centre of mass lies on the wall's side of the edge it stands on: it leans.
+          const auto corners = b.box.corners();
+          const Eigen::Vector3d low = *std::min_element(corners.begin(), corners.end(), [](const auto& p, const auto& q) { return p.z() < q.z(); });
+          const Eigen::Vector3d local = wall.rot.transpose() * (b.box.centre - wall.centre);
+          const Eigen::Vector3d nearest = wall.centre + wall.rot * local.cwiseMax(-wall.half()).cwiseMin(wall.half());
+          const Eigen::Vector2d to_wall = (nearest - b.box.centre).head<2>().normalized();
+          CHECK((b.box.centre - low).head<2>().dot(to_wall) > 0.0079);
         } else {
           CHECK(b.box.tilt() < 1e-6);
           REQUIRE(b.rests_on.size() == 1);
@@ -92,15 +101,15 @@ TEST_CASE("indep: each family brings what it varies") {
 // Per family: the least false F1, hidden F1, support-edge F1 and the largest undecided share.
 // Measured at seed 2027, 30 scenes, 300 iterations (main at the commit that added them).
 const Floor kFloors[] = {
-    {"indep_base", 0.79, 0.81, 0.95, 8.3},         // measured 0.82 / 0.84 / 0.98, 5.3 %
+    {"indep_base", 0.71, 0.81, 0.95, 8.3},         // measured 0.74 / 0.84 / 0.97, 5.3 %
     {"indep_pose_noise", 0.67, 0.90, 0.95, 5.0},   // measured 0.70 / 1.00 / 0.97, 0.0 %
-    {"indep_camera", 0.67, 0.60, 0.92, 6.2},       // measured 0.70 / 0.63 / 0.95, 3.2 %
-    {"indep_keypoints", 0.79, 0.77, 0.95, 5.0},    // measured 0.82 / 0.80 / 0.98, 4.0 %
-    {"indep_catalogue", 0.62, 0.43, 0.91, 17.8},   // measured 0.65 / 0.46 / 0.94, 14.8 %
-    {"indep_false_kinds", 0.86, 0.59, 0.95, 5.0},  // measured 0.89 / 0.62 / 0.98, 4.7 %
-    {"indep_hidden", 0.43, 0.90, 0.95, 12.3},      // measured 0.46 / 0.93 / 0.98, 9.3 %
-    {"indep_leaning", 0.81, 0.83, 0.95, 11.3},     // measured 0.84 / 0.86 / 0.98, 8.3 %
-    {"indep_mixed", 0.82, 0.90, 0.93, 16.3},       // measured 0.85 / 0.93 / 0.96, 13.3 %
+    {"indep_camera", 0.72, 0.72, 0.95, 6.2},       // measured 0.75 / 0.75 / 0.97, 3.2 %
+    {"indep_keypoints", 0.83, 0.90, 0.95, 5.0},    // measured 0.86 / 0.92 / 0.99, 4.0 %
+    {"indep_catalogue", 0.62, 0.40, 0.95, 21.5},   // measured 0.65 / 0.43 / 0.96, 18.5 %
+    {"indep_false_kinds", 0.82, 0.59, 0.95, 10.0}, // measured 0.85 / 0.62 / 0.98, 7.0 %
+    {"indep_hidden", 0.40, 0.90, 0.95, 12.3},      // measured 0.43 / 0.94 / 0.98, 9.3 %
+    {"indep_leaning", 0.82, 0.90, 0.95, 8.6},      // measured 0.85 / 1.00 / 1.00, 5.6 %
+    {"indep_mixed", 0.86, 0.90, 0.95, 12.1},       // measured 0.89 / 0.94 / 0.96, 9.1 %
 };
 
 TEST_CASE("indep: kit accuracy per family") {

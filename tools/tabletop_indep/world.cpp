@@ -136,6 +136,9 @@ std::optional<Body> leaning(Rng& rng, const World& w, const WorldOptions& o) {
   Body body;
   body.label = "leaner";
   body.box.size = Eigen::Vector3d(thick, depth, uniform(rng, std::max(0.05, 0.5 * h_max), h_max));
+  // It rests on its bottom edge nearer the wall; it leans (rather than falling back onto its
+  // face) only with its centre of mass on the wall's side of that edge, here by 8 mm at least.
+  if (0.5 * (body.box.size.z() * std::sin(theta) - thick * std::cos(theta)) < 0.008) return std::nullopt;
   Eigen::Matrix3d frame;
   frame << u, v, Eigen::Vector3d::UnitZ();
   // Tilted about v so that its top goes towards the wall (-u).
