@@ -71,6 +71,7 @@ int main(int argc, char** argv) {
     if (binding_name != "ksm" && binding_name != "seed") throw std::invalid_argument("--binding: ksm or seed");
     const blk::Binding& binding = binding_name == "ksm" ? ksm_binding() : seed_binding();
     if (generator != "sim" && generator != "indep") throw std::invalid_argument("--generator: sim or indep");
+    if (run.verbose && generator != "indep") throw std::invalid_argument("--verbose: with --generator indep only");
     if (!iterations_given) run.iterations = kit::domain_spec(binding).default_iterations;
     std::vector<FamilyScore> rows;
     auto timed = [&](std::string_view name, auto evaluate) {

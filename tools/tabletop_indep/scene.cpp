@@ -289,8 +289,9 @@ struct Builder {
 
   void assign_ids() {
     std::shuffle(s.estimates.begin(), s.estimates.end(), rng);
-    std::vector<int> numbers(998);
-    for (int i = 0; i < 998; ++i) numbers[static_cast<std::size_t>(i)] = i + 1;
+    // Distinct ids drawn from 1..998 (or more, should a scene hold more estimates).
+    std::vector<int> numbers(std::max<std::size_t>(998, s.estimates.size()));
+    for (std::size_t i = 0; i < numbers.size(); ++i) numbers[i] = static_cast<int>(i) + 1;
     std::shuffle(numbers.begin(), numbers.end(), rng);
     for (std::size_t i = 0; i < s.estimates.size(); ++i)
       s.estimates[i].id = o.numeric_ids ? std::to_string(numbers[i]) : fmt::format("obj{}", numbers[i]);
@@ -371,7 +372,7 @@ std::string IndepScene::scene_json() const {
 
 std::string IndepScene::truth_json() const {
   const bool numeric = numeric_ids;
-  auto id_of = [&](const std::string& id) { return numeric || id == "table" ? id : "\"" + id + "\""; };
+  auto id_of = [&](const std::string& id) { return numeric ? id : "\"" + id + "\""; };
   std::vector<std::string> good(world.bodies.size());  // id of a body's correct estimate
   for (const auto& e : estimates)
     if (e.body >= 0 && e.kind == FalseKind::none) good[static_cast<std::size_t>(e.body)] = e.id;

@@ -81,7 +81,6 @@ std::optional<Body> on_table(Rng& rng, const World& w, const WorldOptions& o, bo
     body.box.centre.z() = 0.5 * (body.box.top() - body.box.bottom());
     if (!clear_of(w, body.box, {g}) || penetration(n, body.box) > kTouch || !in_region(body.box, o)) return std::nullopt;
     body.rests_on = {kTable};
-    body.leans_on = -2;
     return body;
   }
   body.box.rot = resting_rotation(axis, chance(rng, 0.5), uniform(rng, -std::numbers::pi, std::numbers::pi));
