@@ -9,14 +9,7 @@
 # Variables: SCENEGEN, TOOL, KSMC, SOURCE_DIR, WORK.
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
-function(run)
-  execute_process(COMMAND ${ARGN} WORKING_DIRECTORY ${SOURCE_DIR} RESULT_VARIABLE rc OUTPUT_VARIABLE out
-                  ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "failed (${rc}): ${ARGN}\n${out}\n${err}")
-  endif()
-  set(out "${out}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/../../cmake/RunStep.cmake)
 run(${SCENEGEN} --seed 101 --count 40 --objects 3..10 --out ${WORK}/train_scenes)
 run(${SCENEGEN} --seed 202 --count 30 --objects 3..10 --out ${WORK}/test_scenes)
 run(${TOOL} worlds --scenes ${WORK}/train_scenes --out ${WORK}/train)

@@ -8,7 +8,7 @@
 // --iterations defaults to the tabletop binary's own default (the kit's domain spec), so the
 // table is what a user running `tabletop` with its defaults gets. --pose-sigma-* set the
 // pose-estimate term of the likelihood (KitOptions::pose_sigma_t / _r, overriding the domain's keypoints.gaussian estimate_sigma_t / _r; 0 turns it off).
-// --write-db writes training worlds for `ksmc learn` (write_training_dbs) instead of scoring.
+// --write-db writes training worlds for `ksmc learn` (training_db, from either generator) instead of scoring.
 // Prints one row per family: false / hidden / support / contact P R F1 and the undecided
 // share of the true positives (docs/tabletop_families.md).
 #include <charconv>
@@ -86,11 +86,16 @@ int main(int argc, char** argv) {
       for (std::string name; std::getline(ss, name, ',');) names.push_back(name);
     }
     if (generator == "indep") {
-      if (!db_dir.empty()) throw std::invalid_argument("--write-db: training worlds come from the sim generator only");
       std::vector<const ti::Family*> chosen;
       if (names.empty())
         for (const auto& f : ti::families()) chosen.push_back(&f);
       for (const auto& n : names) chosen.push_back(&ti::family(n));
+      if (!db_dir.empty()) {
+        long n = 0;
+        for (const ti::Family* f : chosen) n += write_indep_training_dbs(*f, binding, run, db_dir);
+        std::cout << fmt::format("{} training worlds written to {}\n", n, db_dir);
+        return 0;
+      }
       for (const ti::Family* f : chosen) timed(f->name, [&] { return evaluate_indep_family(*f, binding, run); });
     } else {
       std::vector<const tf::Family*> chosen;

@@ -7,6 +7,7 @@
 #include <iostream>
 #include <string>
 
+#include "tests/tabletop_kit/family_eval.h"
 #include "tests/tabletop_kit/family_score.h"
 #include "tools/tabletop_indep/families.h"
 
@@ -36,6 +37,19 @@ inline FamilyScore evaluate_indep_family(const ti::Family& family, const blk::Bi
     }
   }
   return fs;
+}
+
+// training_db (family_eval.h) of each scene of an independent `family`, written to
+// DIR/<family>_<i>.db; returns the number written.
+inline long write_indep_training_dbs(const ti::Family& family, const blk::Binding& binding, const FamilyRun& run,
+                                     const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir);
+  for (long i = 0; i < run.scenes; ++i) {
+    const ti::IndepScene g = ti::generate(family, ti::scene_seed(family, run.seed, static_cast<std::uint64_t>(i)));
+    std::ofstream(dir / fmt::format("{}_{:03}.db", family.name, i))
+        << training_db(binding, g.scene_json(), nlohmann::json::parse(g.truth_json()));
+  }
+  return run.scenes;
 }
 
 }  // namespace ksmc::tests::tabletop_kit
