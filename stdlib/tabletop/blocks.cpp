@@ -147,19 +147,22 @@ bool leaning(const Scene& s, std::int32_t o, double tol, double eps) {
                                                 [](const auto& a, const auto& b) { return a.z() < b.z(); });
   const Eigen::Vector2d falls = (box.center - low).head<2>();
   const EvidenceParams cut = intersect_params(kDefaults.intersect_eps);
-  bool base = false, held = false;
+  // Two different bodies: one under it (the table, or a level box it is higher than) and one
+  // on the side it would fall to, beside it (a wall) or under its raised end (a lower box it
+  // is propped on). A single body cannot be both.
+  std::int32_t base = -1, held = -1;
+  int bases = 0, helds = 0;
   for (std::size_t j = 0; j < s.bodies(); ++j) {
     const auto b = static_cast<std::int32_t>(j);
     if (b == o || !touching(s, o, b, eps)) continue;
     if (intersect_from_geometry(s.pair(o, b, kDefaults.max_contact_eps()), cut)) continue;  // cut into, not held
     const Obb& other = s.box(b);
-    if (s.is_table(b) || (tilt_angle(other) <= tol && extract_higher(box, other, kDefaults))) {
-      base = true;  // a surface under it
-    } else if ((other.closest_point(box.center) - box.center).head<2>().dot(falls) > 0.0) {
-      held = true;  // a body on the side it would fall to
-    }
+    const bool under = s.is_table(b) || (tilt_angle(other) <= tol && extract_higher(box, other, kDefaults));
+    const bool falling_side = !s.is_table(b) && (other.closest_point(box.center) - box.center).head<2>().dot(falls) > 0.0;
+    if (under) base = b, ++bases;
+    if (falling_side) held = b, ++helds;
   }
-  return base && held;
+  return bases > 0 && helds > 0 && (bases > 1 || helds > 1 || base != held);
 }
 
 bool snugger(const Scene& s, std::int32_t a, std::int32_t b, double eps, double margin) {

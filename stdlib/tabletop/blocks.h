@@ -105,10 +105,10 @@ bool flatter(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, d
 // touches, like hover: a move changes it only for bodies touching the moved one.
 bool overhang(const Scene& s, std::int32_t o, double eps, double margin);
 // Constant o is tilted more than `tol` [rad] from resting on a face, and is held as a leaning
-// box is: it touches, within eps [m] and without intersecting, a surface under it (the table,
-// or a box resting on a face that o is `higher` than) and a body on the side it would fall
-// to (the side of its centre from its lowest vertex). It reads the bodies o touches, like
-// overhang.
+// or propped box is: it touches, within eps [m] and without intersecting, a surface under it
+// (the table, or a box resting on a face that o is `higher` than) and a different body on the
+// side it would fall to (the side of its centre from its lowest vertex): a wall it leans on,
+// or a lower box its raised end rests on. It reads the bodies o touches, like overhang.
 bool leaning(const Scene& s, std::int32_t o, double tol, double eps);
 // Constant a sits on what it rests on more snugly than b does: the gap between a's lowest
 // point and the top of the nearest body it rests on (the bodies it touches within eps [m]

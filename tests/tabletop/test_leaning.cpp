@@ -6,6 +6,7 @@
 
 #include "stdlib/tabletop/block_scene.h"
 #include "stdlib/tabletop/blocks.h"
+#include "stdlib/tabletop/extract_higher.h"
 #include "tests/tabletop/tabletop_test_util.h"
 
 using namespace ksmc::stdlib::tabletop;
@@ -87,4 +88,43 @@ TEST_CASE("leaning: standing on a box counts as a surface under it", "[geometry]
   tall.pose.t.z() = 0.15;
   input.objects = {tall, object("slab", Vector3d(0.0, 0.0, 0.02), Vector3d(0.2, 0.2, 0.04)), raised};
   CHECK(leaning(input, 3));
+}
+
+namespace {
+
+// A 20 x 10 x 6 cm box lying tilted by 14 deg, its raised end towards +x: the -x edge of its
+// bottom face on the table at x = 0 (lifted by `lift`), and its bottom face resting on the -x
+// top edge of a flat 10 x 10 x 2.5 cm box (2.5 cm + lift tall), 1 cm beyond the box's centre of
+// mass: at rest on two supports. It is `higher` than the flat box (its bottom face centre is
+// within the tolerance of the flat box's top), as in the generated scenes.
+Scene propped(double lift) {
+  const double t = 14.0 * 3.14159265358979323846 / 180.0, hx = 0.10, hz = 0.03, h = 0.025;
+  const double c = std::cos(t), s = std::sin(t);
+  const Vector3d centre(hx * c - hz * s, 0.0, hx * s + hz * c + lift);
+  const double edge = h / std::tan(t);  // where the bottom face is h above its lowest edge
+  Scene scene;
+  scene.objects = {object("box", centre, Vector3d(2 * hx, 0.1, 2 * hz), rot(-14.0, Vector3d::UnitY())),
+                   object("flat", Vector3d(edge + 0.05, 0.0, 0.5 * (h + lift)), Vector3d(0.1, 0.1, h + lift))};
+  return scene;
+}
+
+}  // namespace
+
+TEST_CASE("leaning: propped on a flat box beyond its centre, its foot on the table", "[geometry]") {
+  // The flat box under its raised end is on the side it would fall to; the box is `higher`
+  // than it, so the flat box is a surface under it as well. The table is the other body.
+  const Scene on_table = propped(0.0);
+  const blocks::Scene s(on_table);
+  REQUIRE(extract_higher(s.box(1), s.box(2), EvidenceParams{}));
+  REQUIRE(blocks::touching(s, 1, 0, kEps));  // the foot on the table
+  REQUIRE(blocks::touching(s, 1, 2, kEps));  // the bottom face on the flat box's edge
+  CHECK(blocks::obb::leaning(s, 1, kTol, kEps));
+
+  // Foot 2 cm above the table, on the (taller) flat box alone: one body cannot both carry it
+  // and hold it on the side it falls to.
+  const Scene lifted = propped(0.02);
+  const blocks::Scene l(lifted);
+  REQUIRE_FALSE(blocks::touching(l, 1, 0, kEps));
+  REQUIRE(blocks::touching(l, 1, 2, kEps));
+  CHECK_FALSE(blocks::obb::leaning(l, 1, kTol, kEps));
 }

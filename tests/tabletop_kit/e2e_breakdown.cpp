@@ -8,13 +8,15 @@
 // KSMC_TTKIT_FITS=1 prints each object's keypoint fit against the truth and the lowest point of
 // its box at the truth, the input, the fit and the reported state; with KSMC_TTKIT_LL=1 also
 // its likelihood at those poses and the prior with the object moved to its fit.
-// KSMC_TTKIT_LEANING=1 counts the objects with obb.leaning evidence (r25) at the input poses, by truth.
+// KSMC_TTKIT_LEANING=1 counts the objects with obb.leaning evidence (r25) at the input poses, by truth;
+// =2 also lists each real tilted box without it, with the bodies within 3 cm.
 // KSMC_TTKIT_PAIRS=1 tallies the pairs of intersecting objects that both rest on a face at the
 // input poses, by truth, and which of the two is snugger (obb.snugger, r26).
 // With KSMC_TTKIT_FAMILY=<family> the scenes are that noise-model family's (tools/tabletop_families,
 // batch seed 2027, as tabletop_family_eval draws them; KSMC_TTKIT_SEED=<seed> another batch).
 //
 // A development tool for docs/tabletop_kit.md "Results", not a test.
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -23,6 +25,8 @@
 
 #include <fmt/format.h>
 
+#include "stdlib/tabletop/extract_higher.h"
+#include "stdlib/tabletop/extract_stable.h"
 #include "stdlib/tabletop/gap_noise.h"
 #include "stdlib/tabletop/keypoint_fit.h"
 #include "stdlib/tabletop/pair_geometry.h"
@@ -152,7 +156,35 @@ int main(int argc, char** argv) {
                                                                     : "real, tilted";
         auto& [n, lean] = leaning[cls];
         ++n;
-        lean += blk::obb::leaning(bs, body, 10.0 / 57.29577951308232, 0.004) ? 1 : 0;
+        const bool leans = blk::obb::leaning(bs, body, 10.0 / 57.29577951308232, 0.004);
+        lean += leans ? 1 : 0;
+        if (!leans && cls == "real, tilted" && std::string(std::getenv("KSMC_TTKIT_LEANING")) == "2") {
+          // Why not: every body within 3 cm, its gap (negative: cut depth), tilt, above/below.
+          const tt::Obb& box = bs.box(body);
+          std::string near;
+          for (std::size_t j = 0; j < bs.bodies(); ++j) {
+            const auto b = static_cast<std::int32_t>(j);
+            if (b == body) continue;
+            const auto geo = tt::pair_geometry(box, bs.box(b), 0.05);
+            if (geo.distance > 0.03) continue;
+            const auto corners = box.vertices();
+            const Eigen::Vector3d low = *std::min_element(corners.begin(), corners.end(), [](const auto& x, const auto& y) { return x.z() < y.z(); });
+            const Eigen::Vector2d falls = (box.center - low).head<2>();
+            const double side = (bs.box(b).closest_point(box.center) - box.center).head<2>().dot(falls.normalized());
+            near += fmt::format(" [{} {} {:.1f}mm tilt {:.0f}{} side {:.0f}mm]", bs.is_table(b) ? std::string("table") : r.scene.objects[static_cast<std::size_t>(b - 1)].id,
+                                geo.overlapping ? "cut" : "gap", 1e3 * (geo.overlapping ? -geo.depth : geo.distance),
+                                57.29578 * tt::tilt_angle(bs.box(b)), tt::extract_higher(box, bs.box(b), tt::EvidenceParams{}) ? " under" : "", 1e3 * side);
+          }
+          std::string truth_touch;  // the true contacts of its physical box, undetected ones marked
+          for (const auto& [a, b] : g.relations.contact) {
+            if (a != o.physical && b != o.physical) continue;
+            const int other = a == o.physical ? b : a;
+            truth_touch += other < 0 ? " table" : fmt::format(" p{}{}", other, g.physical[static_cast<std::size_t>(other)].undetected ? "(undetected)" : "");
+          }
+          near += "; true contacts:" + truth_touch;
+          std::cout << fmt::format("not leaning s{:02} {}: tilt {:.1f} (true {:.1f}) deg;{}\n", i, o.id, 57.29578 * tt::tilt_angle(box),
+                                   57.29578 * tt::tilt_angle(tt::Obb::from_pose(tt::Pose{o.clean_pose.t, o.clean_pose.q}, 2.0 * box.half)), near);
+        }
       }
     }
     if (std::getenv("KSMC_TTKIT_PAIRS")) {  // obb.snugger (r26) at the input poses, by truth
