@@ -124,11 +124,11 @@ FlagValues collect_domain_flags(const DomainSpec& spec, const DomainFlagStorage&
       v.set(f.name, st.toggles.at(f.name) ? "true" : "false", given);
       continue;
     }
-    std::string value = st.text.count(f.name) ? st.text.at(f.name) : f.default_value;
     if (f.arity > 1 && given) {
-      value.clear();
-      for (const auto& w : st.words.at(f.name)) value += (value.empty() ? "" : " ") + w;
+      v.set_words(f.name, st.words.at(f.name), given);
+      continue;
     }
+    std::string value = st.text.count(f.name) ? st.text.at(f.name) : f.default_value;
     if (!given && f.default_value.empty()) continue;
     v.set(f.name, value, given);
     // Check the kind now, so a bad value is a usage error before any work.

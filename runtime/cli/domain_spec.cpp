@@ -49,6 +49,19 @@ void FlagValues::set(const std::string& name, std::string value, bool given) {
   if (given) given_.insert(name);
 }
 
+void FlagValues::set_words(const std::string& name, std::vector<std::string> words, bool given) {
+  std::string joined;
+  for (const auto& w : words) joined += (joined.empty() ? "" : " ") + w;
+  set(name, std::move(joined), given);
+  words_[name] = std::move(words);
+}
+
+std::vector<std::string> FlagValues::words(const std::string& name) const {
+  const auto it = words_.find(name);
+  if (it != words_.end()) return it->second;
+  return {text(name)};
+}
+
 OutputDir::OutputDir(std::filesystem::path dir)
     : target_(std::move(dir)), staged_(std::make_shared<io::StagedDir>(target_)) {}
 

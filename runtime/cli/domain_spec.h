@@ -56,14 +56,20 @@ class FlagValues {
   bool has(const std::string& name) const;    // given, or has a default
   bool given(const std::string& name) const;  // given on the command line
   const std::string& text(const std::string& name) const;  // throws UsageError if absent
+  // The words of a flag of arity > 1 as given (a word may hold spaces: a file path); a flag
+  // of arity 1 gives its one value. Throws UsageError if absent.
+  std::vector<std::string> words(const std::string& name) const;
   long long integer(const std::string& name) const;
   double real(const std::string& name) const;
   bool toggle(const std::string& name) const;
 
   void set(const std::string& name, std::string value, bool given);
+  // A flag of arity > 1: its words; text() gives them joined by single spaces.
+  void set_words(const std::string& name, std::vector<std::string> words, bool given);
 
  private:
   std::map<std::string, std::string> values_;
+  std::map<std::string, std::vector<std::string>> words_;
   std::set<std::string> given_;
 };
 

@@ -60,6 +60,21 @@ TEST_CASE("tabletop --stereo: a featureless pair gives a scene without objects",
   CHECK(fs::exists(f.dir / "out" / "scene.json"));
 }
 
+TEST_CASE("tabletop --stereo: image paths with spaces", "[stereo][cli]") {
+  // Each of the two words of --stereo is one path, spaces and all (the shell quotes them).
+  const Fixture f;
+  const fs::path spaced = f.dir / "left and right";
+  fs::create_directories(spaced);
+  fs::copy_file(f.left, spaced / "left image.png");
+  fs::copy_file(f.right, spaced / "right image.png");
+  const std::string quoted = "\"" + (spaced / "left image.png").string() + "\" \"" + (spaced / "right image.png").string() + "\"";
+  const Outcome o = f.tabletop("--stereo " + quoted + " --calib " + f.calib.string() + " --db " + f.db.string() + " --out " +
+                               (f.dir / "out").string() + " --iterations 10");
+  INFO(o.text);
+  CHECK(o.code == 0);
+  CHECK(fs::exists(f.dir / "out" / "scene.json"));
+}
+
 TEST_CASE("tabletop --stereo: bad input names the file and exits non-zero", "[stereo][cli]") {
   const Fixture f;
   SECTION("images of different sizes") {

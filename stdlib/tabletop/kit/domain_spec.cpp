@@ -115,14 +115,12 @@ Scene load_cloud_input(const cli::DomainInput& in, const blocks::Binding& bindin
 // --stereo LEFT RIGHT --calib stereo.yaml --db DIR: the stereo front end (seed Alg. 2,
 // docs/perception.md). The objects found, with their keypoints, are written as OUT/scene.json.
 Scene load_stereo_input(const cli::DomainInput& in, std::string& scene_json) {
-  const std::string pair = in.flags.text("stereo");
-  const auto space = pair.find(' ');
-  if (space == std::string::npos) throw cli::UsageError("--stereo: expected LEFT RIGHT (two image files)");
+  const std::vector<std::string> pair = in.flags.words("stereo");
+  if (pair.size() != 2) throw cli::UsageError("--stereo: expected LEFT RIGHT (two image files)");
   if (!in.flags.given("calib") || !in.flags.given("db")) throw cli::UsageError("--stereo needs --calib FILE and --db DIR");
 #if defined(KSMC_HAVE_STEREO) && defined(KSMC_HAVE_PERCEPTION)
   namespace st = perception::stereo;
-  st::StereoScene ss = st::scene_from_stereo(pair.substr(0, space), pair.substr(space + 1), in.flags.text("calib"),
-                                             in.flags.text("db"));
+  st::StereoScene ss = st::scene_from_stereo(pair[0], pair[1], in.flags.text("calib"), in.flags.text("db"));
   scene_json = perception::scene_json_text(ss.scene);
   return std::move(ss.scene);
 #else
@@ -266,16 +264,16 @@ cli::DomainSpec domain_spec(const blocks::Binding& binding) {
         : stereo ? load_stereo_input(in, scene_json)
                  : load_input(in.inputs.at(0), in.flags.text("input-format"), warnings));
     for (const auto& w : warnings) std::cerr << "tabletop: warning: " << w << "\n";
-    const std::string pair = stereo ? in.flags.text("stereo") : std::string();  // "LEFT RIGHT"
-    const std::string left = pair.substr(0, pair.find(' '));
+    const std::vector<std::string> pair = stereo ? in.flags.words("stereo") : std::vector<std::string>{};  // LEFT RIGHT
+    const std::string left = stereo ? pair.at(0) : std::string();
     // (The cloud front end checked its estimate before reading the points.)
     if (!cloud) cli::check_work(scene_estimate(stereo ? left : in.inputs.at(0).string(), scene->objects.size(), in), in);
     cli::stage(in, fmt::format("preparing the model of {} objects", scene->objects.size()));
     KitSetup k = make_setup(*b, scene);
     if (!scene->image.empty()) k.setup.extra_inputs.push_back(scene->image);
     if (stereo) {
-      k.setup.extra_inputs.push_back(left);
-      k.setup.extra_inputs.push_back(pair.substr(pair.find(' ') + 1));
+      k.setup.extra_inputs.push_back(pair.at(0));
+      k.setup.extra_inputs.push_back(pair.at(1));
       k.setup.extra_inputs.push_back(in.flags.text("calib"));
     }
     if (cloud || stereo) {
