@@ -145,3 +145,45 @@ TEST_CASE("stereo: without a table in the calibration the table plane is fitted 
     CHECK(std::abs(o.pose.t.z() - 0.5 * o.size.z()) < 0.015);
   }
 }
+
+TEST_CASE("stereo: two copies of one product are two objects", "[stereo]") {
+  // The same textured box (same name, same texture seed) twice on the table, a third box
+  // beside them; the database holds the product once (and the third box).
+  const ts::sy::TexturedBox copy = ts::sy::textured_box("cereal", {0.09, 0.06, 0.08}, ts::upright(-0.12, 0.0, 0.04, 0.3), 7);
+  ts::sy::TexturedBox second = copy;
+  second.pose = ts::upright(0.05, 0.06, 0.04, -0.4);
+  const ts::sy::TexturedBox other = ts::sy::textured_box("tea", {0.08, 0.07, 0.05}, ts::upright(0.02, -0.12, 0.025, 0.1), 8);
+  const std::vector<ts::sy::TexturedBox> boxes{copy, second, other};
+  const ts::sy::Rig rig = ts::standard_rig();
+  const auto pair = ts::sy::render_pair(rig, boxes, 5);
+  const auto dir = ts::fresh_dir("copies");
+  ts::sy::write_object_folder(dir / "db", copy);
+  ts::sy::write_object_folder(dir / "db", other);
+  const auto db = st::load_database(dir / "db");
+  const st::StereoScene s = st::scene_from_images(pair.left, pair.right, "l", "r", ts::sy::rig_calib(rig), db);
+  std::vector<std::string> ids;
+  for (std::size_t i = 0; i < s.scene.objects.size(); ++i) {
+    const auto& o = s.scene.objects[i];
+    ids.push_back(o.id);
+    // Each object found is one of the boxes of its product, within 1 cm and 3 degrees.
+    double best = 1e9, angle = 0.0;
+    for (const auto& b : boxes) {
+      if (b.name != db[static_cast<std::size_t>(s.detections[i].object)].name) continue;
+      const double dc = (o.pose.t - b.pose.t).norm();
+      if (dc < best) best = dc, angle = ts::angle_between(o.pose.q, b.pose.q) * 180.0 / M_PI;
+    }
+    std::printf("copies %s: instance %d, inliers %zu, centre %.2f mm, angle %.2f deg\n", o.id.c_str(), s.detections[i].instance,
+                s.detections[i].inliers.size(), best * 1000.0, angle);
+    CHECK(best < 0.01);
+    CHECK(angle < 3.0);
+  }
+  std::sort(ids.begin(), ids.end());
+  CHECK(ids == std::vector<std::string>{"cereal", "cereal_2", "tea"});
+  // The two copies are two different boxes.
+  REQUIRE(s.scene.objects.size() == 3);
+  std::vector<Eigen::Vector3d> cereal;
+  for (const auto& o : s.scene.objects)
+    if (o.id.rfind("cereal", 0) == 0) cereal.push_back(o.pose.t);
+  REQUIRE(cereal.size() == 2);
+  CHECK((cereal[0] - cereal[1]).norm() > 0.1);
+}

@@ -178,11 +178,31 @@ std::vector<ObjectDetection> detect_objects(const StereoPoints& points, const st
                                             const PoseOptions& options) {
   std::vector<ObjectDetection> out;
   for (std::size_t k = 0; k < db.size(); ++k) {
-    const std::vector<Match3d> matches = match_to_model(points, db[k], options.ratio);
-    ObjectDetection d = estimate_pose(points, db[k], matches, options, options.seed * 0x9E3779B97F4A7C15ULL + k);
-    if (d.inliers.empty()) continue;
-    d.object = static_cast<int>(k);
-    out.push_back(std::move(d));
+    const ObjectModel& model = db[k];
+    std::vector<Match3d> matches = match_to_model(points, model, options.ratio);
+    std::vector<Eigen::Vector3d> centres;  // of the instances found
+    for (int instance = 0; instance < options.max_instances; ++instance) {
+      const std::uint64_t seed = options.seed * 0x9E3779B97F4A7C15ULL + k + 0x5851F42D4C957F2DULL * static_cast<std::uint64_t>(instance);
+      ObjectDetection d = estimate_pose(points, model, matches, options, seed);
+      if (d.inliers.empty()) break;
+      const Eigen::Vector3d centre = d.pose.translation();
+      const bool same_box = std::any_of(centres.begin(), centres.end(), [&](const Eigen::Vector3d& c) {
+        return (c - centre).norm() < 0.9 * model.size.minCoeff();
+      });
+      if (same_box) break;
+      // The matches this pose explains belong to this instance; the next one is sought in the rest.
+      const std::vector<int> explained = inliers_of(d.pose, points, model, matches, options.inlier_tolerance);
+      std::vector<bool> drop(matches.size(), false);
+      for (int i : explained) drop[static_cast<std::size_t>(i)] = true;
+      std::vector<Match3d> rest;
+      for (std::size_t i = 0; i < matches.size(); ++i)
+        if (!drop[i]) rest.push_back(matches[i]);
+      matches = std::move(rest);
+      centres.push_back(centre);
+      d.object = static_cast<int>(k);
+      d.instance = instance;
+      out.push_back(std::move(d));
+    }
   }
   return out;
 }

@@ -12,7 +12,11 @@
 //   that fit within `verified_rms` with `verified_cluster` hypotheses behind them; its
 //   inliers are the keypoints recorded for the reprojection likelihood (left pixel +
 //   model point).
-// One instance per database object. Deterministic: seeded per object.
+// Several instances of one database object (two copies of a product): once an instance is
+// found, the matches its pose explains are set aside and the search runs again on the rest,
+// up to `max_instances`; an instance whose centre lies within 0.9 x the object's smallest
+// side of one already found is the same box and ends the search (two boxes cannot overlap).
+// Deterministic: seeded per object and instance.
 #pragma once
 
 #include <cstdint>
@@ -41,11 +45,13 @@ struct PoseOptions {
   int min_verified_inliers = 5;
   double verified_rms = 0.0015;       // m
   int verified_cluster = 3;           // hypotheses
+  int max_instances = 4;              // per database object
   std::uint64_t seed = 1;
 };
 
 struct ObjectDetection {
   int object = -1;                       // index into the database
+  int instance = 0;                      // 0 for the first copy of the object found, 1, 2, ... then
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // object frame -> left camera
   int matches = 0;                       // valid 3D-3D matches
   int hypotheses = 0;                    // rigid triples tried
@@ -68,7 +74,7 @@ std::vector<Match3d> match_to_model(const StereoPoints& points, const ObjectMode
 ObjectDetection estimate_pose(const StereoPoints& points, const ObjectModel& model, const std::vector<Match3d>& matches,
                               const PoseOptions& options, std::uint64_t seed);
 
-// All database objects found (database order).
+// All database objects found (database order; the instances of one object in the order found).
 std::vector<ObjectDetection> detect_objects(const StereoPoints& points, const std::vector<ObjectModel>& db,
                                             const PoseOptions& options = {});
 

@@ -68,7 +68,7 @@ StereoScene scene_from_images(const cv::Mat& left, const cv::Mat& right, const s
       d.pose = refine_reprojection(calib, d.pose, d.model, l, r).pose;
     }
     SceneObject o;
-    o.id = m.name;
+    o.id = d.instance == 0 ? m.name : fmt::format("{}_{}", m.name, d.instance + 1);  // a second copy: name_2
     o.model = m.name;
     o.size = m.size;
     o.pose = table_from_camera.compose(Pose::from_isometry(d.pose));
