@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::vector<Eigen::Vector3d> kPoints = {{0, 0, 0}, {100, 0, 5.5}, {0, 100, 10.25}, {50, 50, 20}, {-25, 10, 1}};
+const std::vector<Eigen::Vector3d> kPoints = {{0, 0, 2.5}, {100, 0, 5.5}, {0, 100, 10.25}, {50, 50, 20}, {-25, 10, 1}};
 
 fs::path write(const std::string& name, const std::string& bytes) {
   const fs::path d = fs::temp_directory_path() / "ksmc_cloud_io";
@@ -117,9 +117,8 @@ TEST_CASE("cloud_io reads PCD ascii, binary and binary_compressed", "[perception
   const std::string zeros = pcd_header("binary_compressed", "x y z", "4 4 4", "F F F", "5");
   const std::string refs = std::string(1, '\0') + std::string(1, '\0') + std::string(1, '\xe0') + std::string(1, '\x32') +
                            std::string(1, '\0');
-  const Points z = load_cloud(write("z.pcd", zeros + raw(std::uint32_t{5}) + raw(std::uint32_t{60}) + refs));
-  REQUIRE(z.size() == 5);
-  CHECK(z[4].norm() == 0.0);
+  // They decompress to five points at (0, 0, 0): missing returns only, so the error counts them.
+  check_error("z.pcd", zeros + raw(std::uint32_t{5}) + raw(std::uint32_t{60}) + refs, "all 5 points are at (0, 0, 0)");
 }
 
 TEST_CASE("cloud_io refuses corrupt PLY files, naming the file and the place", "[perception][cloud_io]") {
@@ -179,4 +178,17 @@ TEST_CASE("cloud_io refuses corrupt PCD files, naming the file and the place", "
   check_error("dims.pcd", "FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH 3\nHEIGHT 2\nPOINTS 5\nDATA ascii\n",
               "WIDTH 3 x HEIGHT 2 is not POINTS 5");
   check_error("keyword.pcd", "ply\nformat ascii 1.0\n", "header line 1: unknown header keyword \"ply\" (not a PCD file?)");
+}
+
+TEST_CASE("cloud_io leaves out points at (0, 0, 0), a depth sensor's missing returns", "[perception][cloud_io]") {
+  std::vector<Eigen::Vector3d> with_missing = kPoints;
+  with_missing.insert(with_missing.begin() + 2, 3, Eigen::Vector3d::Zero());
+  with_missing.emplace_back(0, 0, 0);
+  std::size_t missing = 99;
+  const Points read = load_cloud(write("missing.ply", ply_text(with_missing)), Units::m, &missing);
+  CHECK(missing == 4);
+  REQUIRE(read.size() == kPoints.size());
+  for (std::size_t i = 0; i < read.size(); ++i) CHECK((read[i] - kPoints[i]).norm() < 1e-6);
+  // Nothing but missing returns: an empty cloud, named.
+  check_error("all_missing.ply", ply_text({Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()}), "all 2 points are at (0, 0, 0)");
 }

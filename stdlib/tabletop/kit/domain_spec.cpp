@@ -84,7 +84,11 @@ Scene load_cloud_input(const cli::DomainInput& in, const blocks::Binding& bindin
     throw cli::UsageError(std::string("--cloud-units: ") + e.what());
   }
   const std::string file = in.flags.text("cloud");
-  const perception::Points points = perception::load_cloud(file, options.units);
+  std::size_t missing = 0;
+  const perception::Points points = perception::load_cloud(file, options.units, &missing);
+  if (missing > 0)
+    std::cerr << fmt::format("tabletop: warning: {}: {} points at (0, 0, 0) left out (a depth sensor's missing returns)\n",
+                             file, missing);
   cli::check_work(cloud_estimate(file, points.size(), in), in);  // large clouds: cost up front
   options.stage = [&in](std::string_view what) { cli::stage(in, what); };
   perception::CloudScene cs = perception::scene_from_points(points, file, options);

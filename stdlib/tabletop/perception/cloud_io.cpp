@@ -465,7 +465,7 @@ std::vector<double> read_pcd(std::string_view bytes, const std::string& file) {
 }
 }  // namespace
 
-Points load_cloud(const std::filesystem::path& path, Units units) {
+Points load_cloud(const std::filesystem::path& path, Units units, std::size_t* origin_points) {
   const std::string name = path.string();
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
@@ -488,12 +488,20 @@ Points load_cloud(const std::filesystem::path& path, Units units) {
   const double scale = metres_per_unit(units);
   Points out;
   out.reserve(xyz.size() / 3);
+  std::size_t origin = 0;
   for (std::size_t i = 0; i < xyz.size() / 3; ++i) {
     const double x = xyz[3 * i], y = xyz[3 * i + 1], z = xyz[3 * i + 2];
     if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
       throw CloudError(fmt::format("{}: point {}: not a finite coordinate ({}, {}, {})", name, i, x, y, z));
+    if (x == 0.0 && y == 0.0 && z == 0.0) {  // a missing return
+      ++origin;
+      continue;
+    }
     out.emplace_back(scale * x, scale * y, scale * z);
   }
+  if (out.empty())
+    throw CloudError(fmt::format("{}: empty cloud: all {} points are at (0, 0, 0) (missing returns)", name, origin));
+  if (origin_points != nullptr) *origin_points = origin;
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <pcl/ModelCoefficients.h>
 #include <pcl/PointIndices.h>
+#include <pcl/console/print.h>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 #include <pcl/sample_consensus/method_types.h>
@@ -40,7 +41,14 @@ TableFit fit_table(const Points& cloud, const std::string& source, const TableOp
   seg.setInputCloud(pc);
   pcl::PointIndices inliers;
   pcl::ModelCoefficients coeff;
-  seg.segment(inliers, coeff);
+  {
+    // PCL prints a degenerate random sample (three nearly collinear points) as an error on
+    // stderr; RANSAC draws another, and the result is checked below. Quiet while it runs.
+    const pcl::console::VERBOSITY_LEVEL level = pcl::console::getVerbosityLevel();
+    pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
+    seg.segment(inliers, coeff);
+    pcl::console::setVerbosityLevel(level);
+  }
   const std::size_t needed = std::max(
       options.min_inliers, static_cast<std::size_t>(std::ceil(options.min_inlier_fraction * static_cast<double>(cloud.size()))));
   if (coeff.values.size() != 4 || inliers.indices.size() < needed)
