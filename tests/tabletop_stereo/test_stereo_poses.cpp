@@ -186,4 +186,13 @@ TEST_CASE("stereo: two copies of one product are two objects", "[stereo]") {
     if (o.id.rfind("cereal", 0) == 0) cereal.push_back(o.pose.t);
   REQUIRE(cereal.size() == 2);
   CHECK((cereal[0] - cereal[1]).norm() > 0.1);
+
+  // A database object already named cereal_2 (not in the view): the copy takes the next number.
+  ts::sy::write_object_folder(dir / "db", ts::sy::textured_box("cereal_2", {0.05, 0.05, 0.05}, ts::upright(0, 0, 0.025, 0), 9));
+  const auto db2 = st::load_database(dir / "db");
+  const st::StereoScene s2 = st::scene_from_images(pair.left, pair.right, "l", "r", ts::sy::rig_calib(rig), db2);
+  std::vector<std::string> ids2;
+  for (const auto& o : s2.scene.objects) ids2.push_back(o.id);
+  std::sort(ids2.begin(), ids2.end());
+  CHECK(ids2 == std::vector<std::string>{"cereal", "cereal_3", "tea"});
 }

@@ -1,5 +1,7 @@
 #include "stdlib/tabletop/perception/stereo/scene_from_stereo.h"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -57,6 +59,10 @@ StereoScene scene_from_images(const cv::Mat& left, const cv::Mat& right, const s
     s.table.size = out.table->size;
   }
   const Pose table_from_camera = s.table_in_camera.inverse();
+  auto taken = [&](const std::string& id) {
+    return std::any_of(db.begin(), db.end(), [&](const ObjectModel& x) { return x.name == id; }) ||
+           std::any_of(s.objects.begin(), s.objects.end(), [&](const SceneObject& x) { return x.id == id; });
+  };
   for (ObjectDetection& d : found) {
     const ObjectModel& m = db[static_cast<std::size_t>(d.object)];
     if (options.refine) {
@@ -68,7 +74,14 @@ StereoScene scene_from_images(const cv::Mat& left, const cv::Mat& right, const s
       d.pose = refine_reprojection(calib, d.pose, d.model, l, r).pose;
     }
     SceneObject o;
-    o.id = d.instance == 0 ? m.name : fmt::format("{}_{}", m.name, d.instance + 1);  // a second copy: name_2
+    // A second copy is name_2, a third name_3; should the database also hold an object of
+    // that name, the copy takes the next free number.
+    o.id = m.name;
+    if (d.instance > 0) {
+      int k = d.instance + 1;
+      do o.id = fmt::format("{}_{}", m.name, k++);
+      while (taken(o.id));
+    }
     o.model = m.name;
     o.size = m.size;
     o.pose = table_from_camera.compose(Pose::from_isometry(d.pose));
