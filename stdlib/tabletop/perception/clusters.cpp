@@ -11,57 +11,48 @@
 
 namespace ksmc::stdlib::tabletop::perception {
 
-namespace {
+struct AboveTable::Index {
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud{new pcl::PointCloud<pcl::PointXYZ>};
+  pcl::search::KdTree<pcl::PointXYZ> tree;
+};
 
-// The points above the table inside its extent, as kept points and as a PCL cloud.
-pcl::PointCloud<pcl::PointXYZ>::Ptr points_above(const Points& table_points, const Eigen::Vector2d& extent,
-                                                 const ClusterOptions& options, Points& kept) {
-  pcl::PointCloud<pcl::PointXYZ>::Ptr above(new pcl::PointCloud<pcl::PointXYZ>);
+AboveTable::AboveTable(const Points& table_points, const Eigen::Vector2d& extent, const ClusterOptions& options) {
+  auto index = std::make_shared<Index>();
   for (const auto& p : table_points) {
     if (p.z() < options.min_height || p.z() > options.max_height) continue;
     if (std::abs(p.x()) > 0.5 * extent.x() + options.table_margin) continue;
     if (std::abs(p.y()) > 0.5 * extent.y() + options.table_margin) continue;
-    kept.push_back(p);
-    above->push_back(pcl::PointXYZ(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())));
+    kept_.push_back(p);
+    index->cloud->push_back(pcl::PointXYZ(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())));
   }
-  return above;
+  if (!kept_.empty()) index->tree.setInputCloud(index->cloud);
+  index_ = std::move(index);
 }
 
-}  // namespace
-
-double object_point_spacing(const Points& table_points, const Eigen::Vector2d& extent, const ClusterOptions& options,
-                            std::size_t max_queries) {
-  Points kept;
-  const pcl::PointCloud<pcl::PointXYZ>::Ptr above = points_above(table_points, extent, options, kept);
-  if (above->size() < 2 || max_queries == 0) return 0.0;
-  pcl::search::KdTree<pcl::PointXYZ> tree;
-  tree.setInputCloud(above);
-  const std::size_t step = std::max<std::size_t>(1, above->size() / max_queries);
+double AboveTable::spacing(std::size_t max_queries) const {
+  const std::size_t n = kept_.size();
+  if (n < 2 || max_queries == 0) return 0.0;
+  const std::size_t step = std::max<std::size_t>(1, n / max_queries);
   pcl::Indices nearest;
   std::vector<float> squared;
   std::vector<double> spacing;
-  for (std::size_t i = 0; i < above->size(); i += step)
-    if (tree.nearestKSearch(static_cast<pcl::index_t>(i), 2, nearest, squared) == 2)
+  for (std::size_t i = 0; i < n; i += step)
+    if (index_->tree.nearestKSearch(static_cast<pcl::index_t>(i), 2, nearest, squared) == 2)
       spacing.push_back(std::sqrt(static_cast<double>(squared[1])));
   if (spacing.empty()) return 0.0;
   std::nth_element(spacing.begin(), spacing.begin() + static_cast<std::ptrdiff_t>(spacing.size() / 2), spacing.end());
   return spacing[spacing.size() / 2];
 }
 
-std::vector<Points> cluster_objects(const Points& table_points, const Eigen::Vector2d& extent,
-                                    const ClusterOptions& options) {
-  Points kept;
-  const pcl::PointCloud<pcl::PointXYZ>::Ptr above = points_above(table_points, extent, options, kept);
+std::vector<Points> AboveTable::clusters(const ClusterOptions& options) const {
   std::vector<Points> out;
-  if (above->empty()) return out;
+  const std::size_t n = kept_.size();
+  if (n == 0) return out;
 
   // Euclidean clustering (the connected components of the graph joining points closer than
   // the tolerance), grown over PCL's KD-tree as pcl::EuclideanClusterExtraction does, but
   // here so that a cancel request is seen every few thousand searches: on a dense cloud the
   // radius searches take most of the front end's time (10 s at 526,144 points).
-  pcl::search::KdTree<pcl::PointXYZ> tree;
-  tree.setInputCloud(above);
-  const std::size_t n = above->size();
   std::vector<char> reached(n, 0);
   pcl::Indices neighbours;
   std::vector<float> distances;
@@ -73,7 +64,7 @@ std::vector<Points> cluster_objects(const Points& table_points, const Eigen::Vec
     component.assign(1, static_cast<int>(seed));
     for (std::size_t k = 0; k < component.size(); ++k) {
       if (++searches % 4096 == 0) runtime::io::throw_if_cancelled("the clustering of the points above the table");
-      tree.radiusSearch(static_cast<pcl::index_t>(component[k]), options.tolerance, neighbours, distances);
+      index_->tree.radiusSearch(static_cast<pcl::index_t>(component[k]), options.tolerance, neighbours, distances);
       for (const auto j : neighbours)
         if (!reached[static_cast<std::size_t>(j)]) {
           reached[static_cast<std::size_t>(j)] = 1;
@@ -84,7 +75,7 @@ std::vector<Points> cluster_objects(const Points& table_points, const Eigen::Vec
     std::sort(component.begin(), component.end());  // input order inside a cluster
     Points pts;
     pts.reserve(component.size());
-    for (int i : component) pts.push_back(kept[static_cast<std::size_t>(i)]);
+    for (int i : component) pts.push_back(kept_[static_cast<std::size_t>(i)]);
     out.push_back(std::move(pts));
   }
   auto centroid = [](const Points& pts) {
@@ -101,6 +92,16 @@ std::vector<Points> cluster_objects(const Points& table_points, const Eigen::Vec
   sorted.reserve(out.size());
   for (const auto& [c, i] : order) sorted.push_back(std::move(out[i]));
   return sorted;
+}
+
+double object_point_spacing(const Points& table_points, const Eigen::Vector2d& extent, const ClusterOptions& options,
+                            std::size_t max_queries) {
+  return AboveTable(table_points, extent, options).spacing(max_queries);
+}
+
+std::vector<Points> cluster_objects(const Points& table_points, const Eigen::Vector2d& extent,
+                                    const ClusterOptions& options) {
+  return AboveTable(table_points, extent, options).clusters(options);
 }
 
 }  // namespace ksmc::stdlib::tabletop::perception

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "stdlib/tabletop/perception/cloud_io.h"
@@ -19,6 +20,24 @@ struct ClusterOptions {
                                // nearest-neighbour spacing of the points above the table); 0: fixed
   std::size_t min_points = 40;
   std::size_t max_points = 10'000'000;
+};
+
+// The points above the table (between min_height and max_height, inside the extent plus
+// table_margin) with a KD-tree over them, built once: the front end measures their spacing
+// and clusters them on the same tree.
+class AboveTable {
+ public:
+  AboveTable(const Points& table_points, const Eigen::Vector2d& extent, const ClusterOptions& options);
+  [[nodiscard]] const Points& points() const noexcept { return kept_; }
+  // object_point_spacing of these points.
+  [[nodiscard]] double spacing(std::size_t max_queries = 4000) const;
+  // cluster_objects of these points with `options`' tolerance and point counts.
+  [[nodiscard]] std::vector<Points> clusters(const ClusterOptions& options) const;
+
+ private:
+  struct Index;  // the PCL cloud and its KD-tree
+  Points kept_;
+  std::shared_ptr<const Index> index_;
 };
 
 // Median distance from a point above the table (as cluster_objects selects them) to its

@@ -46,13 +46,14 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
   out.cloud_in_table = to_table_frame(cloud, out.table.table_in_cloud);
   out.sensor_in_table = out.table.table_in_cloud.inverse().t;
   ClusterOptions clusters_options = options.clusters;
+  const AboveTable above(out.cloud_in_table, out.table.extent, options.clusters);  // one KD-tree for both
   if (options.clusters.spacing_factor > 0.0) {  // a sparser cloud (resolution, range, voxel filter) needs more
-    out.point_spacing = object_point_spacing(out.cloud_in_table, out.table.extent, options.clusters);
+    out.point_spacing = above.spacing();
     clusters_options.tolerance = std::max(options.clusters.tolerance, options.clusters.spacing_factor * out.point_spacing);
   }
   out.cluster_tolerance = clusters_options.tolerance;
   stage(fmt::format("clustering the points above the table ({:.1f} mm tolerance)", 1000.0 * clusters_options.tolerance));
-  out.object_points = cluster_objects(out.cloud_in_table, out.table.extent, clusters_options);
+  out.object_points = above.clusters(clusters_options);
   if (out.object_points.empty())
     throw CloudError(fmt::format("{}: no object above the table ({} table points, none of the other {} points "
                                  "forms a cluster of {} points between {} and {} m above it)",
