@@ -42,6 +42,8 @@ std::string graph_dot(const TabletopResult& r) {
     out += fmt::format("  {} -> {};\n", quote(lower), quote(upper));
   for (const auto& [a, b] : unstable_contact_edges(r))
     out += fmt::format("  {} -> {} [dir=none, style=dashed, constraint=false];\n", quote(a), quote(b));
+  for (const auto& [a, b] : intersect_edges(r.evidence))  // boxes that cut each other: one is wrong
+    out += fmt::format("  {} -> {} [dir=none, style=dotted, color=\"#cc0000\", constraint=false];\n", quote(a), quote(b));
   out += "}\n";
   return out;
 }

@@ -38,6 +38,10 @@ using Edge = std::pair<std::string, std::string>;
 std::vector<Edge> support_edges(const Evidence& ev);
 // Contacts that are not stable support, each unordered pair once as [min, max] by id, sorted.
 std::vector<Edge> unstable_contact_edges(const Evidence& ev);
+// Pairs of objects whose boxes cut into each other (intersect), each unordered pair once as
+// [min, max] by id, sorted; false estimates included: the conflicts a decision rests on, and
+// where two estimates are left undecided, the pair one of which is wrong.
+std::vector<Edge> intersect_edges(const Evidence& ev);
 // The scene graph's edges: those of the evidence between bodies that are not decided false
 // (false_prob above 0.6). A false estimate is no body: it neither carries, nor rests on, nor
 // touches anything. Undecided objects keep their edges; without probabilities all are kept.
@@ -48,8 +52,9 @@ std::vector<Edge> unstable_contact_edges(const TabletopResult& result);
 void validate_result(const TabletopResult& result);
 
 // {"objects":[{"id","pose","stable","false_prob","hidden_prob","false","hidden"}],
-//  "support":[[upper,lower]],"contact":[[a,b]]} (the result's edges: none of an object decided
-// false); "pose" is in the camera frame
+//  "support":[[upper,lower]],"contact":[[a,b]],"intersect":[[a,b]]} (support and contact: the
+// result's edges, none of an object decided false; intersect: every pair of boxes that cut
+// each other, false estimates included); "pose" is in the camera frame
 // ({"t":[x,y,z],"q":[w,x,y,z]}, as in scene.json). Without probabilities the four
 // probability / decision keys are left out. Object ids are echoed in the JSON type scene.json
 // gave them (string or number), in the objects and in the edges.

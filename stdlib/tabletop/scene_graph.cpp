@@ -43,6 +43,15 @@ std::vector<Edge> unstable_contact_edges(const Evidence& ev) {
   return out;
 }
 
+std::vector<Edge> intersect_edges(const Evidence& ev) {
+  std::vector<Edge> out;
+  for (std::size_t a = 0; a < ev.size(); ++a)
+    for (std::size_t b = a + 1; b < ev.size(); ++b)
+      if (ev.intersect[a][b]) out.emplace_back(std::min(ev.ids[a], ev.ids[b]), std::max(ev.ids[a], ev.ids[b]));
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 namespace {
 
 // The edges of `all` whose ends are both not decided false.
@@ -116,7 +125,9 @@ nlohmann::json scene_graph_json(const TabletopResult& r) {
   json contact = json::array();
   for (const auto& [a, b] : unstable_contact_edges(r))
     contact.push_back({id_json(r.scene, a), id_json(r.scene, b)});
-  return json{{"objects", objects}, {"support", support}, {"contact", contact}};
+  json intersect = json::array();
+  for (const auto& [a, b] : intersect_edges(r.evidence)) intersect.push_back({id_json(r.scene, a), id_json(r.scene, b)});
+  return json{{"objects", objects}, {"support", support}, {"contact", contact}, {"intersect", intersect}};
 }
 
 }  // namespace ksmc::stdlib::tabletop

@@ -67,6 +67,12 @@ TEST_CASE("scene_graph.json content", "[results]") {
   TabletopResult undecided = r;
   undecided.probabilities[6].false_prob = 0.5;
   CHECK(scene_graph_json(undecided)["contact"] == nlohmann::json::parse(R"([["6","table"]])"));
+  // Boxes that cut each other are listed, false estimates included: 6 (decided false) cuts 1.
+  CHECK(j["intersect"] == nlohmann::json::parse(R"([["1","6"]])"));
+  CHECK(graph_dot(r).find("\"1\" -> \"6\" [dir=none, style=dotted") != std::string::npos);
+  TabletopResult apart = r;
+  apart.evidence.intersect[Evidence::body(6)][Evidence::body(1)] = apart.evidence.intersect[Evidence::body(1)][Evidence::body(6)] = 0;
+  CHECK(scene_graph_json(apart)["intersect"] == nlohmann::json::array());
   // 3 decided false: it neither rests on the table nor carries 4.
   TabletopResult three = r;
   three.probabilities[3].false_prob = 0.7;
