@@ -34,7 +34,8 @@ std::string graph_dot(const TabletopResult& r) {
     const auto& p = r.probabilities[i];
     const auto f = decide(p.false_prob);
     const auto h = decide(p.hidden_prob);
-    const char* fill = (f && *f) ? "#ff6666" : (h && *h) ? "#66ffff" : "#99dd99";
+    // red: false; cyan: hidden; yellow: undecided (P within 0.4-0.6) on either; green: neither.
+    const char* fill = (f && *f) ? "#ff6666" : (h && *h) ? "#66ffff" : (!f || !h) ? "#ffee88" : "#99dd99";
     out += fmt::format("  {} [label={}, fillcolor=\"{}\"];\n", quote(o.id),
                        "\"" + escape(o.id) + fmt::format("\\nfalse {:.3f}  hidden {:.3f}\"", p.false_prob, p.hidden_prob), fill);
   }
@@ -43,7 +44,9 @@ std::string graph_dot(const TabletopResult& r) {
   for (const auto& [a, b] : unstable_contact_edges(r))
     out += fmt::format("  {} -> {} [dir=none, style=dashed, constraint=false];\n", quote(a), quote(b));
   for (const auto& [a, b] : intersect_edges(r.evidence))  // boxes that cut each other: one is wrong
-    out += fmt::format("  {} -> {} [dir=none, style=dotted, color=\"#cc0000\", constraint=false];\n", quote(a), quote(b));
+    out += fmt::format("  {} -> {} [dir=none, style=dotted, color=\"#cc0000\", penwidth=2, label=\"cuts\", "
+                       "fontcolor=\"#cc0000\", fontsize=10, constraint=false];\n",
+                       quote(a), quote(b));
   out += "}\n";
   return out;
 }

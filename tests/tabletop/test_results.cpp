@@ -95,6 +95,10 @@ TEST_CASE("graph.dot draws support arrows and dashed contacts, none of a false e
   CHECK(graph_dot(undecided).find("\"6\" -> \"table\" [dir=none, style=dashed, constraint=false];") != std::string::npos);
   CHECK(dot.find("\"6\" [label=\"6\\nfalse 0.910  hidden 0.460\", fillcolor=\"#ff6666\"]") != std::string::npos);
   CHECK(dot.find("\"5\" [label=\"5\\nfalse 0.200  hidden 0.800\", fillcolor=\"#66ffff\"]") != std::string::npos);
+  // Undecided (P(false) within 0.4-0.6, neither hidden): yellow. Decided on both: green.
+  CHECK(graph_dot(undecided).find("\"6\" [label=\"6\\nfalse 0.500  hidden 0.460\", fillcolor=\"#ffee88\"]") != std::string::npos);
+  CHECK(dot.find("\"0\" [label=\"0\\nfalse") != std::string::npos);
+  CHECK(dot.find("fillcolor=\"#99dd99\"") != std::string::npos);
 }
 
 TEST_CASE("write_results writes every file; overlay colours; missing dot is a warning", "[results]") {
