@@ -1,6 +1,7 @@
 // Graphviz view of the table-top scene graph: one box per object (false estimates
-// red, objects resting on a hidden object cyan), arrows from the supporting to the
-// supported object (seed Fig. 4.17–4.23), undirected dashed lines for unstable contact.
+// red, objects resting on a hidden object cyan, undecided ones yellow), arrows from the
+// supporting to the supported object (seed Fig. 4.17–4.23), undirected dashed lines for
+// unstable contact, red dotted lines labelled "cuts" between boxes that cut each other.
 #pragma once
 
 #include <filesystem>

@@ -33,13 +33,14 @@ cv::Mat render_overlay(const TabletopResult& r, std::vector<std::string>& warnin
   }
   if (img.empty()) img = cv::Mat(s.camera.height, s.camera.width, CV_8UC3, cv::Scalar(48, 48, 48));
 
-  const cv::Scalar red(0, 0, 255), cyan(255, 255, 0), green(0, 200, 0);
+  const cv::Scalar red(0, 0, 255), cyan(255, 255, 0), yellow(0, 230, 255), green(0, 200, 0);
   for (std::size_t i = 0; i < s.objects.size(); ++i) {
     const SceneObject& o = s.objects[i];
     const bool decided = !r.probabilities.empty();
     const auto f = decided ? decide(r.probabilities[i].false_prob) : std::nullopt;
     const auto h = decided ? decide(r.probabilities[i].hidden_prob) : std::nullopt;
-    const cv::Scalar colour = (f && *f) ? red : (h && *h) ? cyan : green;
+    // As graph.dot: false red, hidden cyan, undecided (either P within 0.4-0.6) yellow.
+    const cv::Scalar colour = (f && *f) ? red : (h && *h) ? cyan : (decided && (!f || !h)) ? yellow : green;
     const Eigen::Isometry3d cam = s.camera_pose(o).isometry();
     const Obb local = Obb::from_pose(Pose{}, o.size);
     for (int e = 0; e < 12; ++e) {

@@ -1,5 +1,6 @@
 // Overlay image: each object's OBB projected into the camera image, false estimates
-// red, objects on a hidden object cyan, the others green, with id labels. The
+// red, objects on a hidden object cyan, undecided ones yellow, the others green, with id
+// labels. The
 // background is the scene's image when it loads, else a blank canvas.
 #pragma once
 

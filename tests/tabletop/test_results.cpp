@@ -120,17 +120,19 @@ TEST_CASE("write_results writes every file; overlay colours; missing dot is a wa
   REQUIRE(!img.empty());
   CHECK(img.cols == 640);
   CHECK(img.rows == 480);
-  int red = 0, cyan = 0, green = 0;
+  int red = 0, cyan = 0, green = 0, yellow = 0;
   for (int y = 0; y < img.rows; ++y)
     for (int x = 0; x < img.cols; ++x) {
       const auto& p = img.at<cv::Vec3b>(y, x);
       if (p[2] > 200 && p[1] < 60 && p[0] < 60) ++red;
       if (p[0] > 200 && p[1] > 200 && p[2] < 60) ++cyan;
       if (p[1] > 150 && p[0] < 60 && p[2] < 60) ++green;
+      if (p[2] > 200 && p[1] > 200 && p[0] < 60) ++yellow;
     }
-  CHECK(red > 100);   // object 6 (false)
-  CHECK(cyan > 100);  // object 5 (hidden)
-  CHECK(green > 500); // the others
+  CHECK(red > 100);    // object 6 (false)
+  CHECK(cyan > 100);   // object 5 (hidden)
+  CHECK(yellow > 100); // object 1 (undecided)
+  CHECK(green > 500);  // the others
 
   ResultWriterOptions no_dot;
   no_dot.dot_executable = "/nonexistent/dot";
