@@ -103,6 +103,8 @@ def main():
         check(n == len(g["objects"]), "tabletop: %d scene graph nodes" % n)
         n = count(r'class="support"')
         check(n == len(g["support"]), "tabletop: %d support arrows for %d support edges" % (n, len(g["support"])))
+        n = count(r'class="intersect"')
+        check(n == len(g.get("intersect", [])), "tabletop: %d 'cuts' lines for %d intersecting pairs" % (n, len(g.get("intersect", []))))
     if os.path.exists(os.path.join(d, "segments.json")):
         s = json.load(open(os.path.join(d, "segments.json")))
         for id_ in ["segments-view", "segments-table", "relations-table"]:

@@ -1,6 +1,7 @@
 // Table-top (scene_graph.json): the object boxes projected into the camera image (sizes and
 // intrinsics from the input scene), the scene graph (support arrows upper -> lower, unstable
-// contacts dashed) and P(false) / P(hidden) per object, on hover and in a table.
+// contacts dashed, boxes that cut each other red dotted) and P(false) / P(hidden) per object,
+// on hover and in a table.
 "use strict";
 K.rotate = function (q, v) {  // q = [w, x, y, z]
   var w = q[0], x = q[1], y = q[2], z = q[3];
@@ -100,6 +101,9 @@ K.drawSceneGraph = function (sec, graph) {
   };
   (graph.support || []).forEach(function (e) { edge(e[0], e[1], "support", { "stroke-width": 2, "marker-end": "url(#arrow)" }); });
   (graph.contact || []).forEach(function (e) { edge(e[0], e[1], "contact", { "stroke-dasharray": "5 4" }); });
+  (graph.intersect || []).forEach(function (e) {  // boxes that cut each other: one of them is wrong
+    edge(e[0], e[1], "intersect", { stroke: "#d62728", "stroke-width": 2, "stroke-dasharray": "2 3" });
+  });
   extra.forEach(function (id) {
     svg.appendChild(K.svg("rect", { x: pos[id][0] - 30, y: pos[id][1] - 12, width: 60, height: 24, fill: "#ddd", stroke: "#333" }));
     svg.appendChild(K.svg("text", { x: pos[id][0], y: pos[id][1] + 4, "text-anchor": "middle" }, id));
@@ -117,7 +121,8 @@ K.drawSceneGraph = function (sec, graph) {
 K.drawTabletop = function (data) {
   var graph = data.scene_graph, objects = graph.objects || [];
   var sec = K.section("tabletop", "Scene: " + objects.length + " objects, " + (graph.support || []).length + " support edges, " +
-                      (graph.contact || []).length + " unstable contacts");
+                      (graph.contact || []).length + " unstable contacts, " + (graph.intersect || []).length +
+                      " pairs of boxes that cut each other");
   var row = K.el("div", { "class": "row" });
   sec.appendChild(row);
   var left = K.el("div"), right = K.el("div");
