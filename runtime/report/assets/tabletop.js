@@ -120,9 +120,12 @@ K.drawSceneGraph = function (sec, graph) {
 
 K.drawTabletop = function (data) {
   var graph = data.scene_graph, objects = graph.objects || [];
-  var sec = K.section("tabletop", "Scene: " + objects.length + " objects, " + (graph.support || []).length + " support edges, " +
-                      (graph.contact || []).length + " unstable contacts, " + (graph.intersect || []).length +
-                      " pairs of boxes that cut each other");
+  var count = function (n, one, many) { return n + " " + (n === 1 ? one : many); };
+  var sec = K.section("tabletop", "Scene: " + count(objects.length, "object", "objects") + ", " +
+                      count((graph.support || []).length, "support edge", "support edges") + ", " +
+                      count((graph.contact || []).length, "unstable contact", "unstable contacts") + ", " +
+                      count((graph.intersect || []).length, "pair of boxes that cut each other",
+                            "pairs of boxes that cut each other"));
   var row = K.el("div", { "class": "row" });
   sec.appendChild(row);
   var left = K.el("div"), right = K.el("div");
