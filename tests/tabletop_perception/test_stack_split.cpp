@@ -1,5 +1,6 @@
 // One cluster, several boxes: a box resting on a box (also one overhanging it: the free-space
-// test), two touching neighbours of different heights, and a tilted box that must stay one box.
+// test), a lower box whose width a resting box covers, two touching neighbours of different
+// heights, and a tilted box that must stay one box.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -107,4 +108,25 @@ TEST_CASE("stack split: a single box, upright or tilted, stays one box", "[perce
   const Eigen::Matrix3d r = Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitY()).toRotationMatrix();
   for (auto& p : tilted) p = r * p + Eigen::Vector3d(0, 0, 0.06);
   CHECK(fit_stacked_boxes(tilted).size() == 1);
+}
+
+TEST_CASE("stack split: the lower box keeps its side faces under a resting box that covers its width",
+          "[perception][stack]") {
+  // Lower box 20 x 10 x 6 cm; the upper 12 x 16 x 5 cm lies across its +x half and overhangs
+  // its width by 3 cm on each side: the lower box's top is seen only on its -x half, its sides
+  // on the +x half only below the upper box.
+  const View v = rendered({upright(0.0, 0.0, 0.0, {0.2, 0.1, 0.06}), upright(0.06, 0.0, 0.06, {0.12, 0.16, 0.05})});
+  const auto boxes = fit_stacked_boxes(v.cluster, {}, {}, &v.seen);
+  REQUIRE(boxes.size() == 2);
+  CHECK(boxes[0].size.z() == Approx(0.06).margin(0.005));
+  CHECK(std::max(boxes[0].size.x(), boxes[0].size.y()) == Approx(0.2).margin(0.01));
+  CHECK(boxes[0].pose.t.x() == Approx(0.0).margin(0.005));
+  CHECK(boxes[1].pose.t.z() - 0.5 * boxes[1].size.z() == Approx(0.06).margin(0.012));
+  CHECK(std::max(boxes[1].size.x(), boxes[1].size.y()) == Approx(0.16).margin(0.01));
+  // Without them, the lower box ends where the upper box's column begins.
+  StackOptions no_sides;
+  no_sides.lower_sides = false;
+  const auto cut = fit_stacked_boxes(v.cluster, {}, no_sides, &v.seen);
+  REQUIRE(cut.size() == 2);
+  CHECK(std::max(cut[0].size.x(), cut[0].size.y()) < 0.15);
 }

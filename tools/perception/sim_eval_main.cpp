@@ -1,17 +1,24 @@
 // ksmc-perception-sim [--scenes N] [--objects A..B] [--seed S] [--sigma M] [--missing R] [--stride K] [--upright]
-//                     [--footprint-only] [--fixed-tolerance] [--visible V] [--verbose]
+//                     [--footprint-only] [--fixed-tolerance] [--visible V] [--verbose] [--dump DIR]
 // Renders depth clouds of generated scenes (three families), runs the point-cloud front end
 // and prints, per family, how well the boxes are recovered (camera frame, nearest-centre
 // matching within 5 cm). "in tol" is over all boxes; "vis>=V" repeats it over the boxes
-// whose visible share (visibility.h) is at least V (--visible, default 0.5). Exit codes: 0 ok, 1 generation failure, 2 bad arguments.
+// whose visible share (visibility.h) is at least V (--visible, default 0.5). --dump DIR writes, per
+// scene, DIR/<family>_<scene>.json: the true and the estimated boxes and each estimate's own
+// points, all in the table frame (for looking at the misses). Exit codes: 0 ok, 1 generation
+// failure or an unwritable dump, 2 bad arguments.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <numbers>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "runtime/io/atomic_file.h"
 
 #include "tools/perception/visibility.h"
 #include "tools/perception_sim/sim_cloud.h"
@@ -32,6 +39,33 @@ double p90(std::vector<double> v) {
   return v[std::min(v.size() - 1, v.size() * 9 / 10)];
 }
 
+nlohmann::json box_json(const std::string& name, const Eigen::Isometry3d& to_table, const Eigen::Vector3d& centre,
+                        const Eigen::Matrix3d& axes, const Eigen::Vector3d& size) {
+  const Eigen::Vector3d c = to_table * centre;
+  const Eigen::Matrix3d r = to_table.linear() * axes;
+  nlohmann::json j{{"name", name}, {"centre", {c.x(), c.y(), c.z()}}, {"size", {size.x(), size.y(), size.z()}}};
+  for (int k = 0; k < 3; ++k) j["axes"].push_back({r(0, k), r(1, k), r(2, k)});
+  return j;
+}
+
+// DIR/<family>_<scene>.json, table frame: truth, estimates and the estimates' points (mm-rounded).
+void dump_scene(const std::string& dir, const std::string& family, int scene, const ps::SimFrame& f,
+                const pc::CloudScene& cs) {
+  const Eigen::Isometry3d to_table = cs.table.table_in_cloud.isometry().inverse();
+  nlohmann::json j;
+  for (const auto& t : f.truth) j["truth"].push_back(box_json(t.name, to_table, t.centre, t.axes, t.size));
+  const std::vector<pc::TruthBox> est = pc::camera_frame_boxes(cs.scene);
+  for (std::size_t e = 0; e < est.size(); ++e) {
+    nlohmann::json b = box_json(est[e].name, to_table, est[e].centre, est[e].axes, est[e].size);
+    b["cluster"] = cs.cluster_of[e];
+    for (const auto& p : cs.object_points[e])
+      b["points"].push_back({std::round(p.x() * 1000.0) / 1000.0, std::round(p.y() * 1000.0) / 1000.0,
+                             std::round(p.z() * 1000.0) / 1000.0});
+    j["estimates"].push_back(std::move(b));
+  }
+  ksmc::runtime::io::write_file_atomic(fmt::format("{}/{}_{}.json", dir, family, scene), j.dump() + "\n");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -40,6 +74,7 @@ int main(int argc, char** argv) {
   double sigma = 0.001, missing = 0.0, min_visible = 0.5;
   int stride = 2;
   bool verbose = false;
+  std::string dump;  // --dump DIR
   bool upright = false;  // the upright fit only (no tilted boxes): the figures before tilted_box.h
   bool footprint_only = false;  // stacks without the free-space test: the figures before it
   bool fixed_tolerance = false;  // the 8 mm clustering tolerance whatever the sampling: the figures before it
@@ -64,6 +99,7 @@ int main(int argc, char** argv) {
       else if (a == "--missing") missing = std::stod(v);
       else if (a == "--stride") stride = std::stoi(v);
       else if (a == "--visible") min_visible = std::stod(v);
+      else if (a == "--dump") dump = v;
       else if (a == "--objects") {
         const auto dots = v.find("..");
         if (dots == std::string::npos) throw std::invalid_argument("--objects wants A..B");
@@ -76,6 +112,14 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     std::cerr << "ksmc-perception-sim: " << e.what() << "\n";
     return 2;
+  }
+  if (!dump.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(dump, ec);
+    if (ec) {
+      std::cerr << "ksmc-perception-sim: " << dump << ": cannot create the dump folder: " << ec.message() << "\n";
+      return 1;
+    }
   }
   fmt::print("{} scenes per family, {}..{} boxes, depth sigma {} mm at 1 m (x z^2), missing {:.0f} %, stride {}\n",
              scenes, lo, hi, 1000.0 * sigma, 100.0 * missing, stride);
@@ -97,6 +141,7 @@ int main(int argc, char** argv) {
         opt.fit.stacks.free_space = !footprint_only;
         if (fixed_tolerance) opt.clusters.spacing_factor = 0.0;
         const pc::CloudScene cs = pc::scene_from_points(f.cloud, fmt::format("{} scene {}", fam.name, s), opt);
+        if (!dump.empty()) dump_scene(dump, fam.name, s, f, cs);
         const pc::TruthReport rep = pc::evaluate_same_frame(pc::camera_frame_boxes(cs.scene), f.truth, 0.05);
         std::vector<ksmc::tools::tabletop_sim::Box> truth_boxes;
         for (const auto& p : f.scene.physical) truth_boxes.push_back(p.body.box);

@@ -87,6 +87,10 @@ std::vector<UprightBox> fit_stacked_boxes(const Points& points, const BoxFitOpti
                                           const FreeSpace* seen) {
   std::vector<UprightBox> upper;  // found from the top down
   Points rest = points;
+  // The lower boxes' side faces under a resting upper box. They are kept out of the plateau
+  // search (the upper box's shadow line along such a face reads as a level of its own) and
+  // join the fit of the box whose height range they fall in.
+  Points sides;
   while (static_cast<int>(upper.size()) + 1 < o.max_boxes) {
     const std::vector<double> levels = plateaus(rest, o);
     if (levels.size() < 2) break;
@@ -101,12 +105,23 @@ std::vector<UprightBox> fit_stacked_boxes(const Points& points, const BoxFitOpti
       if (p.z() <= below + 0.5 * o.level_gap && !inside(column, {p.x(), p.y()}, o.column_margin)) remaining.push_back(p);
     if (remaining.size() < o.min_points) break;
     const Rect2 under = min_area_rect(flat(remaining), box.footprint_trim);
+    const std::size_t top_points = top.size();
+    Points below_sides;  // the sides lower than this box's bottom, for the boxes under it (the band
+                         // around the plateau is left out, as the rest's points are)
+    for (const auto& p : sides) {
+      if (p.z() > below + 0.5 * o.level_gap) top.push_back(p);
+      else if (p.z() <= below - 0.5 * o.level_gap) below_sides.push_back(p);
+    }
     UprightBox b = fit_upright_box(top, box);
     if (covered(column, under) >= o.min_support ||
-        (o.free_space && seen != nullptr && seen_through_below(column, below, top.size(), o, *seen))) {  // resting on the rest: bottom at the plateau below
+        (o.free_space && seen != nullptr && seen_through_below(column, below, top_points, o, *seen))) {  // resting on the rest: bottom at the plateau below
       const double top_z = b.pose.t.z() + 0.5 * b.size.z();
       b.size.z() = std::max(top_z - below, box.min_size);
       b.pose.t.z() = below + 0.5 * b.size.z();
+      sides = std::move(below_sides);
+      if (o.lower_sides)
+        for (const auto& p : rest)
+          if (p.z() <= below - 0.5 * o.level_gap && inside(column, {p.x(), p.y()}, o.column_margin)) sides.push_back(p);
     } else {  // a merged neighbour standing on the table: its column goes down to the table
       Points whole;
       for (const auto& p : rest)
@@ -116,6 +131,7 @@ std::vector<UprightBox> fit_stacked_boxes(const Points& points, const BoxFitOpti
     upper.push_back(b);
     rest = std::move(remaining);
   }
+  rest.insert(rest.end(), sides.begin(), sides.end());
   std::vector<UprightBox> out{fit_upright_box(rest, box)};
   out.insert(out.end(), upper.rbegin(), upper.rend());
   return out;

@@ -33,6 +33,9 @@ struct StackOptions {
   std::size_t min_seen_through = 20;
   double seen_through_share = 0.05;
   int max_boxes = 6;
+  // A resting upper box hides part of the lower one's top; the lower box's side faces under
+  // it (below the plateau) stay with the lower box, so its footprint reaches under the upper.
+  bool lower_sides = true;
 };
 
 // Boxes of one cluster (table frame), lowest first. Always at least one box. `seen`: the
