@@ -109,12 +109,27 @@ TEST_CASE("simulated clouds: a sensor of a quarter the resolution keeps most box
   fam.depth.stride = 4;  // every 4th pixel: 160 x 120 returns
   const Compared c = compare(fam, 7, 3, [](CloudOptions& o, bool derived) {
     if (!derived) o.clusters.spacing_factor = 0.0;
+    o.clusters.slant_factor = 0.0;  // the tolerance alone in both (the next case joins along rows)
   });
   const int boxes = c.boxes;
   const int* within = c.within;  // fixed 8 mm tolerance, derived from the point spacing
   INFO("within tolerance of " << boxes << ": fixed tolerance " << within[0] << ", derived " << within[1]);
   CHECK(within[1] >= within[0] + 3);
   CHECK(within[1] >= (boxes * 7) / 10);
+}
+
+TEST_CASE("simulated clouds: grazing tops joined along their rows keep sparse stacks together", "[perception][sim]") {
+  SimFamily fam = sim_families(5, 10)[2];
+  REQUIRE(fam.name == "stacks");
+  fam.depth.stride = 3;
+  const Compared c = compare(fam, 1, 10, [](CloudOptions& o, bool along_rows) {
+    if (!along_rows) o.clusters.slant_factor = 0.0;
+  });
+  const int boxes = c.boxes;
+  const int* within = c.within;  // the tolerance alone, joined along the rows
+  INFO("within tolerance of " << boxes << ": isotropic " << within[0] << ", along the rows " << within[1]);
+  CHECK(within[1] >= within[0] + 4);
+  CHECK(within[1] >= (boxes * 68) / 100);
 }
 
 TEST_CASE("depth render: deterministic, missing returns thin the cloud", "[perception][sim]") {

@@ -1,7 +1,10 @@
 // ksmc-cloud-scene CLOUD --out DIR [--cloud-units cm|mm|m] [--truth obb_world.json] [--gate M]
-//                  [--clusters FILE] [--min-height M] [--tolerance M] [--spacing-factor F] [--min-points N]
+//                  [--clusters FILE] [--min-height M] [--tolerance M] [--spacing-factor F] [--slant-factor S]
+//                  [--min-points N]
 // --tolerance is the clustering tolerance's floor; a sparser cloud gets F (default 2) times
-// its object point spacing (--spacing-factor 0: the tolerance as given).
+// its object point spacing (--spacing-factor 0: the tolerance as given). Along the rows of a
+// flat top seen at a slant, points up to S (default 2) row spacings apart are joined
+// (--slant-factor 0: the tolerance in every direction).
 // Runs the point-cloud front end, writes DIR/scene.json and prints one line per box; with
 // --truth, registers the boxes to the true ones and prints the errors.
 // Exit codes: 0 ok, 1 bad input (message names the file), 2 bad arguments.
@@ -89,6 +92,7 @@ int main(int argc, char** argv) {
       else if (a == "--min-height") options.clusters.min_height = std::stod(value("--min-height"));
       else if (a == "--tolerance") options.clusters.tolerance = std::stod(value("--tolerance"));
       else if (a == "--spacing-factor") options.clusters.spacing_factor = std::stod(value("--spacing-factor"));
+      else if (a == "--slant-factor") options.clusters.slant_factor = std::stod(value("--slant-factor"));
       else if (a == "--min-points") options.clusters.min_points = std::stoul(value("--min-points"));
       else if (!a.empty() && a[0] == '-') return usage("unknown option " + a);
       else if (cloud.empty()) cloud = a;

@@ -45,9 +45,58 @@ double AboveTable::spacing(std::size_t max_queries) const {
 }
 
 std::vector<Points> AboveTable::clusters(const ClusterOptions& options) const {
+  ClusterOptions isotropic = options;
+  isotropic.slant_factor = 0.0;
+  return clusters(isotropic, Eigen::Vector3d::Zero());
+}
+
+std::vector<Points> AboveTable::clusters(const ClusterOptions& options, const Eigen::Vector3d& sensor) const {
   std::vector<Points> out;
   const std::size_t n = kept_.size();
   if (n == 0) return out;
+  // Per point: the horizontal direction of its ray and how far apart the rows of a flat top
+  // are along it there (at least the tolerance).
+  const bool slant = options.slant_factor > 0.0;
+  std::vector<Eigen::Vector2d> along(slant ? n : 0);
+  std::vector<double> row(slant ? n : 0, options.tolerance);
+  if (slant) {
+    // The sensor's angular step: the median nearest-neighbour distance over the range.
+    std::vector<double> steps;
+    pcl::Indices nearest;
+    std::vector<float> squared;
+    const std::size_t stride = std::max<std::size_t>(1, n / 4000);
+    for (std::size_t i = 0; i < n; i += stride)
+      if (index_->tree.nearestKSearch(static_cast<pcl::index_t>(i), 2, nearest, squared) == 2)
+        steps.push_back(std::sqrt(static_cast<double>(squared[1])) / std::max(1e-3, (kept_[i] - sensor).norm()));
+    double step = 0.0;
+    if (!steps.empty()) {
+      std::nth_element(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2), steps.end());
+      step = steps[steps.size() / 2];
+    }
+    const double cap = options.max_slant * options.tolerance;
+    for (std::size_t i = 0; i < n; ++i) {
+      const Eigen::Vector3d ray = kept_[i] - sensor;
+      const double r = ray.norm();
+      const Eigen::Vector2d h(ray.x(), ray.y());
+      if (r <= 0.0 || h.norm() <= 1e-9) continue;
+      along[i] = h.normalized();
+      const double cos_z = std::max(1e-3, std::abs(ray.z()) / r);
+      row[i] = std::clamp(options.slant_factor * r * step / cos_z, options.tolerance, cap);
+    }
+  }
+  const auto joined = [&](std::size_t i, std::size_t j, float squared) {
+    if (!slant) return true;
+    const Eigen::Vector3d d = kept_[j] - kept_[i];
+    const double l = std::min(row[i], row[j]);
+    // Along the horizontal direction of the ray to the pair's midpoint: symmetric in i and j,
+    // so the clusters are the connected components of one graph, whatever the search order.
+    Eigen::Vector2d w = along[i] + along[j];
+    if (w.norm() <= 1e-9) return false;
+    w.normalize();
+    const double a = d.x() * w.x() + d.y() * w.y();
+    const double rest2 = std::max(0.0, static_cast<double>(squared) - a * a);
+    return (a * a) / (l * l) + rest2 / (options.tolerance * options.tolerance) <= 1.0;
+  };
 
   // Euclidean clustering (the connected components of the graph joining points closer than
   // the tolerance), grown over PCL's KD-tree as pcl::EuclideanClusterExtraction does, but
@@ -64,12 +113,16 @@ std::vector<Points> AboveTable::clusters(const ClusterOptions& options) const {
     component.assign(1, static_cast<int>(seed));
     for (std::size_t k = 0; k < component.size(); ++k) {
       if (++searches % 4096 == 0) runtime::io::throw_if_cancelled("the clustering of the points above the table");
-      index_->tree.radiusSearch(static_cast<pcl::index_t>(component[k]), options.tolerance, neighbours, distances);
-      for (const auto j : neighbours)
-        if (!reached[static_cast<std::size_t>(j)]) {
+      const auto i = static_cast<std::size_t>(component[k]);
+      // The joined points lie within the larger semi-axis of the ellipse: row[i].
+      index_->tree.radiusSearch(static_cast<pcl::index_t>(i), slant ? row[i] : options.tolerance, neighbours, distances);
+      for (std::size_t m = 0; m < neighbours.size(); ++m) {
+        const auto j = neighbours[m];
+        if (!reached[static_cast<std::size_t>(j)] && joined(i, static_cast<std::size_t>(j), distances[m])) {
           reached[static_cast<std::size_t>(j)] = 1;
           component.push_back(static_cast<int>(j));
         }
+      }
     }
     if (component.size() < options.min_points || component.size() > options.max_points) continue;
     std::sort(component.begin(), component.end());  // input order inside a cluster

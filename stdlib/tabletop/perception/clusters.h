@@ -20,6 +20,14 @@ struct ClusterOptions {
                                // nearest-neighbour spacing of the points above the table); 0: fixed
   std::size_t min_points = 40;
   std::size_t max_points = 10'000'000;
+  // Grazing tops (scene_from_points, where the sensor is known): a flat top seen at a slant
+  // is sampled in rows `slant_factor` x r x step / |ray_z| apart along the ray's horizontal
+  // direction (r the range, step the sensor's angular step measured from the cloud). Two
+  // points are joined when their offset along that direction is within that spacing (at
+  // most `max_slant` x the tolerance) and the rest of the offset within the tolerance.
+  // 0: isotropic (the tolerance alone).
+  double slant_factor = 2.0;
+  double max_slant = 3.0;
 };
 
 // The points above the table (between min_height and max_height, inside the extent plus
@@ -31,8 +39,12 @@ class AboveTable {
   [[nodiscard]] const Points& points() const noexcept { return kept_; }
   // object_point_spacing of these points.
   [[nodiscard]] double spacing(std::size_t max_queries = 4000) const;
-  // cluster_objects of these points with `options`' tolerance and point counts.
+  // cluster_objects of these points with `options`' tolerance and point counts (isotropic:
+  // no sensor, so slant_factor is not used).
   [[nodiscard]] std::vector<Points> clusters(const ClusterOptions& options) const;
+  // The same, joining points along the rows of a grazing top (ClusterOptions::slant_factor)
+  // seen from `sensor` (table frame).
+  [[nodiscard]] std::vector<Points> clusters(const ClusterOptions& options, const Eigen::Vector3d& sensor) const;
 
  private:
   struct Index;  // the PCL cloud and its KD-tree
