@@ -132,6 +132,17 @@ TEST_CASE("simulated clouds: grazing tops joined along their rows keep sparse st
   CHECK(within[1] >= (boxes * 68) / 100);
 }
 
+TEST_CASE("simulated clouds: tops split by a resting box's shadow are joined", "[perception][sim]") {
+  SimFamily fam = sim_families(5, 10)[2];
+  REQUIRE(fam.name == "stacks");
+  const Compared c = compare(fam, 1, 10, [](CloudOptions& o, bool merge) { o.shadow.enabled = merge; });
+  const int boxes = c.boxes;
+  const int* within = c.within;  // without, with the shadow merge
+  INFO("within tolerance of " << boxes << ": without the shadow merge " << within[0] << ", with it " << within[1]);
+  CHECK(within[1] >= within[0] + 3);
+  CHECK(within[1] >= (boxes * 74) / 100);
+}
+
 TEST_CASE("depth render: deterministic, missing returns thin the cloud", "[perception][sim]") {
   SimFamily fam = sim_families(3, 3).front();
   const SimFrame a = simulate_frame(5, fam), b = simulate_frame(5, fam);

@@ -1,5 +1,5 @@
 // ksmc-perception-sim [--scenes N] [--objects A..B] [--seed S] [--sigma M] [--missing R] [--stride K] [--upright]
-//                     [--footprint-only] [--fixed-tolerance] [--isotropic] [--visible V] [--verbose] [--dump DIR]
+//                     [--footprint-only] [--fixed-tolerance] [--isotropic] [--no-shadow-merge] [--visible V] [--verbose] [--dump DIR]
 // Renders depth clouds of generated scenes (three families), runs the point-cloud front end
 // and prints, per family, how well the boxes are recovered (camera frame, nearest-centre
 // matching within 5 cm). "in tol" is over all boxes; "vis>=V" repeats it over the boxes
@@ -78,6 +78,7 @@ int main(int argc, char** argv) {
   bool upright = false;  // the upright fit only (no tilted boxes): the figures before tilted_box.h
   bool footprint_only = false;  // stacks without the free-space test: the figures before it
   bool fixed_tolerance = false;  // the 8 mm clustering tolerance whatever the sampling: the figures before it
+  bool no_shadow_merge = false;  // clusters split by a resting box's shadow stay apart: the figures before it
   bool isotropic = false;  // clusters joined by the tolerance alone, not along grazing tops' rows: the figures before it
   try {
     for (int i = 1; i < argc; ++i) {
@@ -88,6 +89,7 @@ int main(int argc, char** argv) {
                          : a == "--footprint-only"  ? &footprint_only
                          : a == "--fixed-tolerance" ? &fixed_tolerance
                          : a == "--isotropic"       ? &isotropic
+                         : a == "--no-shadow-merge" ? &no_shadow_merge
                                                     : nullptr;
       if (flag != nullptr) {
         *flag = true;
@@ -143,6 +145,7 @@ int main(int argc, char** argv) {
         opt.fit.stacks.free_space = !footprint_only;
         if (fixed_tolerance) opt.clusters.spacing_factor = 0.0;
         if (isotropic) opt.clusters.slant_factor = 0.0;
+        if (no_shadow_merge) opt.shadow.enabled = false;
         const pc::CloudScene cs = pc::scene_from_points(f.cloud, fmt::format("{} scene {}", fam.name, s), opt);
         if (!dump.empty()) dump_scene(dump, fam.name, s, f, cs);
         const pc::TruthReport rep = pc::evaluate_same_frame(pc::camera_frame_boxes(cs.scene), f.truth, 0.05);

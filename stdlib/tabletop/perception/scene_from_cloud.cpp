@@ -53,7 +53,8 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
   }
   out.cluster_tolerance = clusters_options.tolerance;
   stage(fmt::format("clustering the points above the table ({:.1f} mm tolerance)", 1000.0 * clusters_options.tolerance));
-  out.object_points = above.clusters(clusters_options, out.sensor_in_table);
+  out.object_points = merge_shadow_split(above.clusters(clusters_options, out.sensor_in_table), out.sensor_in_table,
+                                         options.shadow);
   if (out.object_points.empty())
     throw CloudError(fmt::format("{}: no object above the table ({} table points, none of the other {} points "
                                  "forms a cluster of {} points between {} and {} m above it)",

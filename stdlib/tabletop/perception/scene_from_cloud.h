@@ -14,6 +14,7 @@
 #include "stdlib/tabletop/perception/cloud_io.h"
 #include "stdlib/tabletop/perception/cluster_boxes.h"
 #include "stdlib/tabletop/perception/clusters.h"
+#include "stdlib/tabletop/perception/shadow_merge.h"
 #include "stdlib/tabletop/perception/stack_split.h"
 #include "stdlib/tabletop/perception/table_plane.h"
 #include "stdlib/tabletop/scene.h"
@@ -27,6 +28,7 @@ struct CloudOptions {
   // spacing, and the box fits' radii, cells and point counts follow (sampling-dependent
   // settings scaled by derived / floor tolerance); spacing_factor = 0 keeps everything fixed.
   ClusterOptions clusters;
+  ShadowMergeOptions shadow;  // clusters split by a resting box's shadow joined (shadow_merge.h)
   ClusterBoxOptions fit;     // boxes per cluster: tilted, stacked, upright (cluster_boxes.h)
   Camera camera{615.0, 615.0, 320.0, 240.0, 640, 480};  // written to scene.json (overlay)
   double table_thickness = 0.05;                        // m, the slab below z = 0

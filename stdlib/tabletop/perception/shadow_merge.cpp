@@ -1,0 +1,170 @@
+#include "stdlib/tabletop/perception/shadow_merge.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <set>
+#include <utility>
+
+namespace ksmc::stdlib::tabletop::perception {
+
+namespace {
+
+using Cell = std::pair<long, long>;
+
+// 2D points hashed on a grid of `cell` m: "is any point within `cell` of q".
+class Near2 {
+ public:
+  explicit Near2(double cell) : cell_(cell) {}
+  void add(double x, double y) { cells_[key(x, y)].emplace_back(x, y); }
+  [[nodiscard]] bool near(double x, double y) const {
+    const Cell k = key(x, y);
+    for (long i = -1; i <= 1; ++i)
+      for (long j = -1; j <= 1; ++j) {
+        const auto it = cells_.find({k.first + i, k.second + j});
+        if (it == cells_.end()) continue;
+        for (const auto& p : it->second)
+          if ((p - Eigen::Vector2d(x, y)).squaredNorm() <= cell_ * cell_) return true;
+      }
+    return false;
+  }
+  [[nodiscard]] bool empty() const { return cells_.empty(); }
+
+ private:
+  [[nodiscard]] Cell key(double x, double y) const {
+    return {std::lround(std::floor(x / cell_)), std::lround(std::floor(y / cell_))};
+  }
+  double cell_;
+  std::map<Cell, std::vector<Eigen::Vector2d>> cells_;
+};
+
+constexpr double kCell = 0.005;  // m, the footprint grid of the tops
+
+Cell cell_of(const Eigen::Vector3d& p) {
+  return {std::lround(std::floor(p.x() / kCell)), std::lround(std::floor(p.y() / kCell))};
+}
+
+// The highest point of each footprint cell.
+std::map<Cell, double> cell_tops(const Points& pts) {
+  std::map<Cell, double> top;
+  for (const auto& p : pts) {
+    auto [it, fresh] = top.emplace(cell_of(p), p.z());
+    if (!fresh) it->second = std::max(it->second, p.z());
+  }
+  return top;
+}
+
+// Points of a top at height `plane`: within `band` of it and of their cell's highest point
+// (a side face crossing that height is not a top).
+bool on_top(const Eigen::Vector3d& p, double plane, double band, const std::map<Cell, double>& tops) {
+  return std::abs(p.z() - plane) <= band && p.z() >= tops.at(cell_of(p)) - band;
+}
+
+// The height of a cluster's widest flat top: the most common highest point over 5 mm cells
+// (4 mm bins, the higher bin on a tie).
+double widest_top(const std::map<Cell, double>& top) {
+  std::map<long, int> hist;
+  for (const auto& [k, z] : top) ++hist[std::lround(std::floor(z / 0.004))];
+  long best = 0;
+  int count = -1;
+  for (const auto& [bin, n] : hist)
+    if (n >= count) best = bin, count = n;
+  return (static_cast<double>(best) + 0.5) * 0.004;
+}
+
+struct Bounds {
+  Eigen::Vector2d lo{1e9, 1e9}, hi{-1e9, -1e9};
+  double top = -1e9;
+};
+
+Bounds bounds_of(const Points& pts) {
+  Bounds b;
+  for (const auto& p : pts) {
+    b.lo = b.lo.cwiseMin(p.head<2>());
+    b.hi = b.hi.cwiseMax(p.head<2>());
+    b.top = std::max(b.top, p.z());
+  }
+  return b;
+}
+
+// True when `far` is the bare far part of a top whose near part, with the box lying on it,
+// is `near`: see the header.
+bool shadow_split(const Points& near, const Points& far, double plane, const Eigen::Vector3d& sensor,
+                  const ShadowMergeOptions& o) {
+  Near2 near_plane(o.reach), shadow(o.reach);
+  std::size_t on_plane = 0, above = 0;
+  const std::map<Cell, double> near_tops = cell_tops(near), far_tops = cell_tops(far);
+  for (const auto& p : near) {
+    if (on_top(p, plane, o.plane_band, near_tops)) {
+      near_plane.add(p.x(), p.y());
+      ++on_plane;
+    } else if (p.z() > plane + o.occluder_above && sensor.z() > p.z()) {
+      // Where the ray from the sensor through p meets the plane.
+      const double t = (sensor.z() - plane) / (sensor.z() - p.z());
+      const Eigen::Vector3d q = sensor + t * (p - sensor);
+      shadow.add(q.x(), q.y());
+      ++above;
+    }
+  }
+  if (on_plane < o.min_points || above < o.min_points) return false;
+  bool far_touches = false;
+  for (const auto& p : far)
+    if (on_top(p, plane, o.plane_band, far_tops) && shadow.near(p.x(), p.y())) {
+      far_touches = true;
+      break;
+    }
+  if (!far_touches) return false;
+  // The near top reaches the shadow or the occluder standing on it.
+  for (const auto& p : near)
+    if (p.z() > plane + o.occluder_above) {
+      if (near_plane.near(p.x(), p.y())) return true;
+    }
+  return false;
+}
+
+}  // namespace
+
+std::vector<Points> merge_shadow_split(std::vector<Points> clusters, const Eigen::Vector3d& sensor,
+                                       const ShadowMergeOptions& o) {
+  if (!o.enabled || clusters.size() < 2) return clusters;
+  const std::size_t n = clusters.size();
+  std::vector<Bounds> bounds;
+  for (const auto& c : clusters) bounds.push_back(bounds_of(c));
+  std::vector<std::size_t> root(n);
+  std::iota(root.begin(), root.end(), 0);
+  const auto find = [&root](std::size_t i) {
+    while (root[i] != i) i = root[i] = root[root[i]];
+    return i;
+  };
+  for (std::size_t f = 0; f < n; ++f) {
+    // The far part is a bare top: nothing of it stands above its plane.
+    const std::map<Cell, double> tops = cell_tops(clusters[f]);
+    const double plane = widest_top(tops);
+    if (bounds[f].top > plane + 2.0 * o.plane_band) continue;
+    std::size_t on_plane = 0;
+    for (const auto& p : clusters[f]) on_plane += on_top(p, plane, o.plane_band, tops);
+    if (on_plane < o.min_points) continue;
+    for (std::size_t c = 0; c < n; ++c) {
+      if (c == f || find(c) == find(f)) continue;
+      const Bounds& a = bounds[c];
+      const Bounds& b = bounds[f];
+      const Eigen::Vector2d gap = (a.lo - b.hi).cwiseMax(b.lo - a.hi).cwiseMax(0.0);
+      if (gap.norm() > o.neighbourhood || a.top <= plane + o.occluder_above) continue;
+      if (shadow_split(clusters[c], clusters[f], plane, sensor, o)) root[find(f)] = find(c);
+    }
+  }
+  // Each group in the place of its first cluster; the rest appended to it in order.
+  std::vector<Points> out;
+  std::map<std::size_t, std::size_t> slot;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t r = find(i);
+    const auto [it, fresh] = slot.emplace(r, out.size());
+    if (fresh) out.emplace_back();
+    Points& dst = out[it->second];
+    dst.insert(dst.end(), clusters[i].begin(), clusters[i].end());
+  }
+  return out;
+}
+
+}  // namespace ksmc::stdlib::tabletop::perception

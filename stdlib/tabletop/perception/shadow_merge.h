@@ -1,0 +1,30 @@
+// Clusters split by an occlusion shadow: a box resting across a lower box hides a strip of
+// the lower box's top behind it (seen from the sensor), and the top's far part becomes a
+// cluster of its own. Two clusters are one when the far one's top and a flat part of the
+// near one lie on one plane, and the strip between them is the shadow that the near
+// cluster's higher points cast on that plane from the sensor.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "stdlib/tabletop/perception/cloud_io.h"
+
+namespace ksmc::stdlib::tabletop::perception {
+
+struct ShadowMergeOptions {
+  bool enabled = true;
+  double plane_band = 0.004;   // m, points within this of the far top's height are on its plane
+  double occluder_above = 0.01; // m, the near cluster's points this far above the plane cast the shadow
+  double reach = 0.01;         // m, the shadow must come this close to both tops' points (2D)
+  std::size_t min_points = 20; // on the plane in each cluster, and above it in the near one
+  double neighbourhood = 0.2;  // m, only clusters whose footprints' boxes are this close are compared
+};
+
+// `clusters` (table frame) with the shadow-split ones joined (the near cluster keeps its
+// place; the order stays deterministic). `sensor`: the cloud origin in the table frame.
+std::vector<Points> merge_shadow_split(std::vector<Points> clusters, const Eigen::Vector3d& sensor,
+                                       const ShadowMergeOptions& options = {});
+
+}  // namespace ksmc::stdlib::tabletop::perception
