@@ -52,3 +52,12 @@ TEST_CASE("clusters: gaps across the view, and longer than the rows' spacing, st
   add_rows(above, -0.1, 0.1, 0.21, 0.3, 0.064, 0.014);
   CHECK(count(above, 2.0) == 2);
 }
+
+TEST_CASE("clusters: points straight below the sensor (no ray direction) join by the tolerance", "[perception][clusters]") {
+  // One row of points along x through the sensor's foot: the pairs across it have opposite
+  // horizontal ray directions, so no direction of their own.
+  Points pts;
+  add_rows(pts, -0.1215, 0.1215, 0.0, 0.0, 0.05, 0.01);
+  ClusterOptions o;
+  CHECK(AboveTable(pts, kTable, o).clusters(o, Eigen::Vector3d(0.0, 0.0, 1.0)).size() == 1);
+}

@@ -91,11 +91,12 @@ std::vector<Points> AboveTable::clusters(const ClusterOptions& options, const Ei
     // Along the horizontal direction of the ray to the pair's midpoint: symmetric in i and j,
     // so the clusters are the connected components of one graph, whatever the search order.
     Eigen::Vector2d w = along[i] + along[j];
-    if (w.norm() <= 1e-9) return false;
+    const double tol2 = options.tolerance * options.tolerance;
+    if (w.norm() <= 1e-9) return static_cast<double>(squared) <= tol2;  // straight below the sensor: no direction
     w.normalize();
     const double a = d.x() * w.x() + d.y() * w.y();
     const double rest2 = std::max(0.0, static_cast<double>(squared) - a * a);
-    return (a * a) / (l * l) + rest2 / (options.tolerance * options.tolerance) <= 1.0;
+    return (a * a) / (l * l) + rest2 / tol2 <= 1.0;
   };
 
   // Euclidean clustering (the connected components of the graph joining points closer than
