@@ -115,7 +115,8 @@ bool shadow_split(const Points& near, const Points& far, double plane, const Eig
       break;
     }
   if (!far_touches) return false;
-  // The near top reaches the shadow or the occluder standing on it.
+  // The occluder rests on the near top: some of its points are within `reach` (2D) of the
+  // top's points.
   for (const auto& p : near)
     if (p.z() > plane + o.occluder_above) {
       if (near_plane.near(p.x(), p.y())) return true;
@@ -138,7 +139,7 @@ std::vector<Points> merge_shadow_split(std::vector<Points> clusters, const Eigen
     return i;
   };
   for (std::size_t f = 0; f < n; ++f) {
-    // The far part is a bare top: nothing of it stands above its plane.
+    // The far part is a bare top: nothing of it more than 2 x plane_band above its plane.
     const std::map<Cell, double> tops = cell_tops(clusters[f]);
     const double plane = widest_top(tops);
     if (bounds[f].top > plane + 2.0 * o.plane_band) continue;

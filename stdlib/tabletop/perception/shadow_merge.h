@@ -18,12 +18,13 @@ struct ShadowMergeOptions {
   double plane_band = 0.004;   // m, points within this of the far top's height are on its plane
   double occluder_above = 0.01; // m, the near cluster's points this far above the plane cast the shadow
   double reach = 0.01;         // m, the shadow must come this close to both tops' points (2D)
-  std::size_t min_points = 20; // on the plane in each cluster, and above it in the near one
+  std::size_t min_points = 20; // on the plane (highest in their 5 mm cell) in each cluster, and above it in the near one
   double neighbourhood = 0.2;  // m, only clusters whose footprints' boxes are this close are compared
 };
 
-// `clusters` (table frame) with the shadow-split ones joined (the near cluster keeps its
-// place; the order stays deterministic). `sensor`: the cloud origin in the table frame.
+// `clusters` (table frame) with the shadow-split ones joined: each group takes the place of
+// its first cluster, its clusters' points in their order (deterministic). `sensor`: the
+// cloud origin in the table frame.
 std::vector<Points> merge_shadow_split(std::vector<Points> clusters, const Eigen::Vector3d& sensor,
                                        const ShadowMergeOptions& options = {});
 
