@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
@@ -29,19 +30,23 @@ AboveTable::AboveTable(const Points& table_points, const Eigen::Vector2d& extent
   index_ = std::move(index);
 }
 
-double AboveTable::spacing(std::size_t max_queries) const {
+double AboveTable::median_nearest(std::size_t max_queries, const std::function<double(std::size_t)>& scale) const {
   const std::size_t n = kept_.size();
   if (n < 2 || max_queries == 0) return 0.0;
   const std::size_t step = std::max<std::size_t>(1, n / max_queries);
   pcl::Indices nearest;
   std::vector<float> squared;
-  std::vector<double> spacing;
+  std::vector<double> values;
   for (std::size_t i = 0; i < n; i += step)
     if (index_->tree.nearestKSearch(static_cast<pcl::index_t>(i), 2, nearest, squared) == 2)
-      spacing.push_back(std::sqrt(static_cast<double>(squared[1])));
-  if (spacing.empty()) return 0.0;
-  std::nth_element(spacing.begin(), spacing.begin() + static_cast<std::ptrdiff_t>(spacing.size() / 2), spacing.end());
-  return spacing[spacing.size() / 2];
+      values.push_back(std::sqrt(static_cast<double>(squared[1])) * scale(i));
+  if (values.empty()) return 0.0;
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2), values.end());
+  return values[values.size() / 2];
+}
+
+double AboveTable::spacing(std::size_t max_queries) const {
+  return median_nearest(max_queries, [](std::size_t) { return 1.0; });
 }
 
 std::vector<Points> AboveTable::clusters(const ClusterOptions& options) const {
@@ -61,18 +66,8 @@ std::vector<Points> AboveTable::clusters(const ClusterOptions& options, const Ei
   std::vector<double> row(slant ? n : 0, options.tolerance);
   if (slant) {
     // The sensor's angular step: the median nearest-neighbour distance over the range.
-    std::vector<double> steps;
-    pcl::Indices nearest;
-    std::vector<float> squared;
-    const std::size_t stride = std::max<std::size_t>(1, n / 4000);
-    for (std::size_t i = 0; i < n; i += stride)
-      if (index_->tree.nearestKSearch(static_cast<pcl::index_t>(i), 2, nearest, squared) == 2)
-        steps.push_back(std::sqrt(static_cast<double>(squared[1])) / std::max(1e-3, (kept_[i] - sensor).norm()));
-    double step = 0.0;
-    if (!steps.empty()) {
-      std::nth_element(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2), steps.end());
-      step = steps[steps.size() / 2];
-    }
+    const double step =
+        median_nearest(4000, [&](std::size_t i) { return 1.0 / std::max(1e-3, (kept_[i] - sensor).norm()); });
     const double cap = options.max_slant * options.tolerance;
     for (std::size_t i = 0; i < n; ++i) {
       const Eigen::Vector3d ray = kept_[i] - sensor;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -47,6 +48,10 @@ class AboveTable {
   [[nodiscard]] std::vector<Points> clusters(const ClusterOptions& options, const Eigen::Vector3d& sensor) const;
 
  private:
+  // Median over at most `max_queries` points spread evenly of the distance to the nearest
+  // neighbour times scale(point index); 0 when fewer than two points.
+  [[nodiscard]] double median_nearest(std::size_t max_queries, const std::function<double(std::size_t)>& scale) const;
+
   struct Index;  // the PCL cloud and its KD-tree
   Points kept_;
   std::shared_ptr<const Index> index_;
