@@ -5,7 +5,9 @@
 // "in memory" is scene_from_points; "PLY" adds reading the cloud from an ASCII PLY file;
 // "likelihood" is one full cloud-likelihood evaluation and one single-object update;
 // "upright" is scene_from_points with the tilted-box search off (ClusterBoxOptions::tilted),
-// timed right after "mem" so that both see the same load.
+// "no joins" the same with the clusters joined by the tolerance alone (no grazing-top rows,
+// ClusterOptions::slant_factor = 0, and no shadow merge), each timed right after "mem" so
+// that all see the same load.
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
@@ -46,14 +48,14 @@ int main(int argc, char** argv) {
   const auto dir = std::filesystem::temp_directory_path() / "ksmc_bench_perception";
   std::filesystem::create_directories(dir);
   fmt::print("bench_tabletop_perception: median of {} runs per scene, median over 3 scenes\n", runs);
-  fmt::print("{:<8} {:>5} {:>8} {:>7} {:>14} {:>10} {:>10} {:>14} {:>14}\n", "family", "boxes", "points", "found",
-             "s/frame (mem)", "upright", "s/frame PLY", "us likelihood", "us update");
+  fmt::print("{:<8} {:>5} {:>8} {:>7} {:>14} {:>10} {:>10} {:>10} {:>14} {:>14}\n", "family", "boxes", "points",
+             "found", "s/frame (mem)", "upright", "no joins", "s/frame PLY", "us likelihood", "us update");
   for (int n : {5, 10}) {
     for (const std::string name : {"singles", "stacks"}) {
       ps::SimFamily fam;
       for (auto& f : ps::sim_families(n, n))
         if (f.name == name) fam = f;
-      std::vector<double> mem, upright, ply, lik, upd, points, found;
+      std::vector<double> mem, upright, no_joins, ply, lik, upd, points, found;
       for (std::uint64_t s = 0; s < 3; ++s) {
         const ps::SimFrame f = ps::simulate_frame(ksmc::tools::tabletop_sim::scene_seed(42 + static_cast<std::uint64_t>(n), s), fam);
         pc::CloudOptions opt;
@@ -63,6 +65,10 @@ int main(int argc, char** argv) {
         pc::CloudOptions upright_only = opt;
         upright_only.fit.tilted = false;
         upright.push_back(seconds([&] { (void)pc::scene_from_points(f.cloud, "bench", upright_only); }, runs));
+        pc::CloudOptions unjoined = opt;
+        unjoined.clusters.slant_factor = 0.0;
+        unjoined.shadow.enabled = false;
+        no_joins.push_back(seconds([&] { (void)pc::scene_from_points(f.cloud, "bench", unjoined); }, runs));
         const auto file = dir / "frame.ply";
         pc::save_ply(file, f.cloud);
         ply.push_back(seconds([&] { cs = pc::scene_from_cloud(file, opt); }, runs));
@@ -77,8 +83,9 @@ int main(int argc, char** argv) {
         points.push_back(static_cast<double>(f.cloud.size()));
         found.push_back(static_cast<double>(cs.scene.objects.size()));
       }
-      fmt::print("{:<8} {:>5} {:>8.0f} {:>7.0f} {:>14.4f} {:>10.4f} {:>10.4f} {:>14.0f} {:>14.0f}\n", name, n,
-                 median(points), median(found), median(mem), median(upright), median(ply), median(lik), median(upd));
+      fmt::print("{:<8} {:>5} {:>8.0f} {:>7.0f} {:>14.4f} {:>10.4f} {:>10.4f} {:>10.4f} {:>14.0f} {:>14.0f}\n", name, n,
+                 median(points), median(found), median(mem), median(upright), median(no_joins), median(ply),
+                 median(lik), median(upd));
     }
   }
   std::filesystem::remove_all(dir);
