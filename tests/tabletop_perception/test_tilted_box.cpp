@@ -128,3 +128,76 @@ TEST_CASE("tilted box: a box leaning on an upright box is one cluster and two bo
   CHECK(eu.centre < 0.01);
   CHECK(eu.angle < 1.0 * kDeg);
 }
+
+namespace {
+
+// `size` turned by `rotation`, its lowest corner on the table, moved along `along` (a unit
+// horizontal vector) until its face of local axis `-z` (the back) passes through `contact`.
+Eigen::Isometry3d leaning_against(const Eigen::Matrix3d& rotation, const Eigen::Vector3d& size, const Eigen::Vector3d& at,
+                                  const Eigen::Vector3d& along, const Eigen::Vector3d& contact) {
+  Eigen::Isometry3d p = Eigen::Isometry3d::Identity();
+  p.linear() = rotation;
+  double low = 0.0;
+  for (int c = 0; c < 8; ++c) {
+    const Eigen::Vector3d corner((c & 1 ? 0.5 : -0.5) * size.x(), (c & 2 ? 0.5 : -0.5) * size.y(), (c & 4 ? 0.5 : -0.5) * size.z());
+    low = std::min(low, (rotation * corner).z());
+  }
+  const Eigen::Vector3d back = -rotation.col(2);  // outward normal of the back face
+  Eigen::Vector3d t = at;
+  t.z() = -low;
+  // (contact - (t + s along)) . back = size.z / 2
+  const double s = ((contact - t).dot(back) - 0.5 * size.z()) / along.dot(back);
+  p.translation() = t + s * along;
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("tilted box: a neighbour's face near the leaning box but not meeting it at an edge is not its face",
+          "[perception][tilted]") {
+  // A small box leaning on the corner of a long low box's end, 3 mm over its side: the long
+  // box's side face is perpendicular to the leaning box's large face and within 3 cm of it,
+  // but stops about 2.5 cm short of its plane.
+  const Eigen::Vector3d long_size(0.115, 0.225, 0.074), small_size(0.064, 0.099, 0.027);
+  const Eigen::Isometry3d low_box = posed(0.0, 0.0, Eigen::Vector3d(0.0, 0.0, 0.5 * long_size.z()));
+  const Eigen::Matrix3d r = Eigen::AngleAxisd(62.0 * kDeg, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  const Eigen::Isometry3d small = leaning_against(
+      r, small_size, Eigen::Vector3d(0.5 * long_size.x() - 0.003 + 0.5 * small_size.x(), 0.0, 0.0),
+      Eigen::Vector3d::UnitY(), Eigen::Vector3d(0.0, -0.5 * long_size.y(), long_size.z()));
+  Points pts;
+  add_visible_box(pts, low_box, long_size, 0.003, kSensor, 0.0005, 1);
+  add_visible_box(pts, small, small_size, 0.003, kSensor, 0.0005, 2);
+  const auto boxes = fit_cluster_boxes(pts);
+  REQUIRE(boxes.size() == 2);
+  const BoxError es = error_of(boxes[0], small, small_size), el = error_of(boxes[1], low_box, long_size);
+  CHECK(es.centre < 0.005);
+  CHECK(es.angle < 1.5 * kDeg);
+  CHECK(es.max_size() < 0.006);
+  CHECK(el.centre < 0.005);
+  CHECK(el.max_size() < 0.006);
+}
+
+TEST_CASE("tilted box: a neighbour's face flush with the leaning box's side does not stretch it",
+          "[perception][tilted]") {
+  // A long box leaning 22 degrees, its raised end on a smaller upright box whose side is in
+  // the same plane: the two sides are one planar face, joined where the small box's top
+  // meets the long box's underside.
+  const Eigen::Vector3d long_size(0.233, 0.119, 0.081), small_size(0.064, 0.132, 0.071);
+  const Eigen::Matrix3d r = Eigen::AngleAxisd(22.0 * kDeg, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  const double small_x = -0.14;  // the small box's centre; its +x top edge carries the long box
+  const Eigen::Isometry3d small =
+      posed(0.0, 0.0, Eigen::Vector3d(small_x, -0.5 * long_size.y() + 0.5 * small_size.y(), 0.5 * small_size.z()));
+  // The long box's underside is its local -z face: lean it there on the small box's edge.
+  const Eigen::Isometry3d leaning = leaning_against(r, long_size, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(),
+                                                    Eigen::Vector3d(small_x + 0.5 * small_size.x(), 0.0, small_size.z()));
+  Points pts;
+  add_visible_box(pts, leaning, long_size, 0.003, kSensor, 0.0005, 1);
+  add_visible_box(pts, small, small_size, 0.003, kSensor, 0.0005, 2);
+  const auto boxes = fit_cluster_boxes(pts);
+  REQUIRE(boxes.size() >= 1);
+  const BoxError e = error_of(boxes[0], leaning, long_size);
+  INFO("size " << boxes[0].size.transpose());
+  CHECK(e.centre < 0.005);
+  CHECK(e.angle < 1.5 * kDeg);
+  CHECK(e.max_size() < 0.006);
+}

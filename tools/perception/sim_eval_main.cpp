@@ -1,5 +1,6 @@
 // ksmc-perception-sim [--scenes N] [--objects A..B] [--seed S] [--sigma M] [--missing R] [--stride K] [--upright]
-//                     [--footprint-only] [--fixed-tolerance] [--isotropic] [--no-shadow-merge] [--visible V] [--verbose] [--dump DIR]
+//                     [--footprint-only] [--fixed-tolerance] [--isotropic] [--no-shadow-merge] [--whole-faces]
+//                     [--visible V] [--verbose] [--dump DIR]
 // Renders depth clouds of generated scenes (three families), runs the point-cloud front end
 // and prints, per family, how well the boxes are recovered (camera frame, nearest-centre
 // matching within 5 cm). "in tol" is over all boxes; "vis>=V" repeats it over the boxes
@@ -10,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <iostream>
 #include <numbers>
 #include <string>
@@ -80,6 +82,8 @@ int main(int argc, char** argv) {
   bool fixed_tolerance = false;  // the 8 mm clustering tolerance whatever the sampling: the figures before it
   bool no_shadow_merge = false;  // clusters split by a resting box's shadow stay apart: the figures before it
   bool isotropic = false;  // clusters joined by the tolerance alone, not along grazing tops' rows: the figures before it
+  bool whole_faces = false;  // tilted boxes from whole faces, a neighbour's face near by taken in: the figures before
+                             // the edge and filled-rows tests (tilted_box.h)
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
@@ -90,6 +94,7 @@ int main(int argc, char** argv) {
                          : a == "--fixed-tolerance" ? &fixed_tolerance
                          : a == "--isotropic"       ? &isotropic
                          : a == "--no-shadow-merge" ? &no_shadow_merge
+                         : a == "--whole-faces"     ? &whole_faces
                                                     : nullptr;
       if (flag != nullptr) {
         *flag = true;
@@ -146,6 +151,10 @@ int main(int argc, char** argv) {
         if (fixed_tolerance) opt.clusters.spacing_factor = 0.0;
         if (isotropic) opt.clusters.slant_factor = 0.0;
         if (no_shadow_merge) opt.shadow.enabled = false;
+        if (whole_faces) {
+          opt.fit.tilt.edge_gap = std::numeric_limits<double>::infinity();
+          opt.fit.tilt.fill_ratio = 0.0;
+        }
         const pc::CloudScene cs = pc::scene_from_points(f.cloud, fmt::format("{} scene {}", fam.name, s), opt);
         if (!dump.empty()) dump_scene(dump, fam.name, s, f, cs);
         const pc::TruthReport rep = pc::evaluate_same_frame(pc::camera_frame_boxes(cs.scene), f.truth, 0.05);

@@ -24,6 +24,8 @@ ClusterBoxOptions for_sampling(ClusterBoxOptions fit, double rho) {
   fit.tilt.faces.min_points = fewer(fit.tilt.faces.min_points);
   fit.tilt.min_face_points = fewer(fit.tilt.min_face_points);
   fit.tilt.own_margin *= rho;
+  fit.tilt.edge_gap *= rho;
+  fit.tilt.fill_cell *= rho;
   fit.tilt.probe_voxel *= rho;
   fit.stacks.cell *= rho;
   fit.stacks.column_margin *= rho;

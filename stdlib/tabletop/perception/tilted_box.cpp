@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "stdlib/tabletop/perception/footprint.h"
 
@@ -44,6 +45,16 @@ bool one_sided(const Points& points, const Face& f, const Face& plane, double to
   return quantile(d, 0.01) >= -tolerance || quantile(d, 0.99) <= tolerance;
 }
 
+// Whether face `f` reaches face `plane`'s plane within `gap` (1 % quantile): two faces of
+// one box meet at their common edge, while a neighbour's face that merely comes near (a
+// box leaning on the end of another) stops short of the leaning box's plane.
+bool reaches(const Points& points, const Face& f, const Face& plane, double gap) {
+  std::vector<double> d;
+  d.reserve(f.points.size());
+  for (int i : f.points) d.push_back(std::abs((points[static_cast<std::size_t>(i)] - plane.centroid).dot(plane.normal)));
+  return quantile(d, 0.01) <= gap;
+}
+
 // The largest face that is tilted, has `min_points` and is no narrower than min_face_side
 // in its own plane (a box face, not a bevel, a label or a carton's gable top).
 std::vector<Face>::const_iterator tilted_seed(const Points& points, const std::vector<Face>& faces, const TiltOptions& o,
@@ -80,6 +91,52 @@ void rest_on_table(const Points& points, const Eigen::Matrix3d& axes, Eigen::Vec
   }
   if (inside > o.max_support_points) return;
   lo = glo, hi = ghi;
+}
+
+// The points of face `f` in its filled part. A box face is a rectangle on the box's axes,
+// so across each of its two in-plane axes its rows (slices of fill_cell) are about equally
+// long where the sensor saw it. A neighbour's flush face joined to it at a corner or along
+// a short stretch is a run of short rows: the face is kept from its longest row outwards
+// while the rows are at least fill_ratio of that one, over both in-plane axes.
+std::vector<int> face_core(const Points& points, const Face& f, const Eigen::Matrix3d& axes, const TiltOptions& o) {
+  const Eigen::Vector3d n = axes.transpose() * f.normal;
+  int normal_axis = 0;
+  n.cwiseAbs().maxCoeff(&normal_axis);
+  const double cell = o.fill_cell;
+  std::vector<Eigen::Vector3d> c;
+  c.reserve(f.points.size());
+  for (int i : f.points) c.push_back(axes.transpose() * points[static_cast<std::size_t>(i)]);
+  std::vector<bool> keep(c.size(), true);
+  for (int k = 0; k < 3; ++k) {
+    if (k == normal_axis) continue;
+    const int j = 3 - k - normal_axis;
+    double k0 = std::numeric_limits<double>::infinity();
+    for (const auto& p : c) k0 = std::min(k0, p(k));
+    const auto slice = [&](const Eigen::Vector3d& p) { return static_cast<std::size_t>((p(k) - k0) / cell); };
+    std::vector<std::vector<long>> rows;
+    for (const auto& p : c) {
+      const std::size_t r = slice(p);
+      if (r >= rows.size()) rows.resize(r + 1);
+      rows[r].push_back(std::lround(std::floor(p(j) / cell)));
+    }
+    std::vector<std::size_t> length(rows.size());
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      std::sort(rows[r].begin(), rows[r].end());
+      length[r] = static_cast<std::size_t>(std::unique(rows[r].begin(), rows[r].end()) - rows[r].begin());
+    }
+    const auto longest = static_cast<std::size_t>(std::max_element(length.begin(), length.end()) - length.begin());
+    const auto enough = [&](std::size_t r) {
+      return static_cast<double>(length[r]) >= o.fill_ratio * static_cast<double>(length[longest]);
+    };
+    std::size_t first = longest, last = longest;
+    while (first > 0 && enough(first - 1)) --first;
+    while (last + 1 < rows.size() && enough(last + 1)) ++last;
+    for (std::size_t q = 0; q < c.size(); ++q) keep[q] = keep[q] && slice(c[q]) >= first && slice(c[q]) <= last;
+  }
+  std::vector<int> out;
+  for (std::size_t q = 0; q < c.size(); ++q)
+    if (keep[q]) out.push_back(f.points[q]);
+  return out;
 }
 
 }  // namespace
@@ -125,6 +182,7 @@ std::optional<TiltedFit> fit_tilted_box(const Points& points, const TiltOptions&
   for (const Face& f : faces) {
     if (&f == &*seed || std::abs(f.normal.dot(seed->normal)) > std::sin(o.perpendicular_deg * kDeg)) continue;
     if (!one_sided(points, f, *seed, o.side_tolerance) || !one_sided(points, *seed, f, o.side_tolerance)) continue;
+    if (!reaches(points, f, *seed, o.edge_gap) || !reaches(points, *seed, f, o.edge_gap)) continue;
     const bool touches = std::any_of(f.points.begin(), f.points.end(), [&](int i) {
       near_seed.neighbours(points[static_cast<std::size_t>(i)], nb);
       return !nb.empty();
@@ -137,11 +195,13 @@ std::optional<TiltedFit> fit_tilted_box(const Points& points, const TiltOptions&
   axes.col(1) = (second - second.dot(axes.col(0)) * axes.col(0)).normalized();
   axes.col(2) = axes.col(0).cross(axes.col(1));
 
+  std::vector<std::vector<int>> cores;
+  for (const Face* f : box_faces) cores.push_back(face_core(points, *f, axes, o));
   Eigen::Vector3d lo, hi;
   for (int k = 0; k < 3; ++k) {
     std::vector<double> s;
-    for (const Face* f : box_faces)
-      for (int i : f->points) s.push_back(points[static_cast<std::size_t>(i)].dot(axes.col(k)));
+    for (const auto& core : cores)
+      for (int i : core) s.push_back(points[static_cast<std::size_t>(i)].dot(axes.col(k)));
     lo(k) = quantile(s, o.trim);
     hi(k) = quantile(s, 1.0 - o.trim);
   }

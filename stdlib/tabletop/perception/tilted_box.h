@@ -24,12 +24,15 @@ struct TiltOptions {
   double adjacent = 0.03;           // m, a face of the same box has a point this close to the first face
                                     // (edges are in no face: two normal radii apart)
   double side_tolerance = 0.005;    // m; two faces of one box each lie on one side of the other's plane
+  double edge_gap = 0.012;          // m; ... and each comes this close to the other's plane (their edge)
   double trim = 0.003;              // quantile pulled in on each side of each extent
   double own_margin = 0.008;        // m, cluster points this close to the box are its own
   double min_size = 0.005;          // m
   double support_gap = 0.006;       // m; a box whose lowest corner is higher is grown to the table
   double max_support_growth = 0.15; // m
   std::size_t max_support_points = 10; // ... unless the grown part holds more cluster points than this
+  double fill_cell = 0.008;         // m; a face's rows across each in-plane axis are this wide ...
+  double fill_ratio = 0.35;         // ... and it keeps the rows at least this long against its longest
   double probe_voxel = 0.008;       // m; the faces are first looked for on a copy this sparse
 };
 
