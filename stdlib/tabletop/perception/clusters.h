@@ -1,5 +1,5 @@
 // Objects above the table: the points between min_height and max_height over the table
-// (inside its extent), grouped by PCL Euclidean clustering. Table-frame points in and out.
+// (inside its extent), grouped by Euclidean clustering. Table-frame points in and out.
 #pragma once
 
 #include <cstddef>
@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "stdlib/tabletop/perception/cloud_io.h"
+#include "stdlib/tabletop/perception/point_grid.h"
 
 namespace ksmc::stdlib::tabletop::perception {
 
@@ -32,12 +33,12 @@ struct ClusterOptions {
 };
 
 // The points above the table (between min_height and max_height, inside the extent plus
-// table_margin) with a KD-tree over them, built once: the front end measures their spacing
-// and clusters them on the same tree.
+// table_margin) with a grid over them (point_grid.h), built once: the front end measures
+// their spacing and clusters them on the same grid.
 class AboveTable {
  public:
   AboveTable(const Points& table_points, const Eigen::Vector2d& extent, const ClusterOptions& options);
-  [[nodiscard]] const Points& points() const noexcept { return kept_; }
+  [[nodiscard]] const Points& points() const noexcept;
   // object_point_spacing of these points.
   [[nodiscard]] double spacing(std::size_t max_queries = 4000) const;
   // cluster_objects of these points with `options`' tolerance and point counts (isotropic:
@@ -52,8 +53,7 @@ class AboveTable {
   // neighbour times scale(point index); 0 when fewer than two points.
   [[nodiscard]] double median_nearest(std::size_t max_queries, const std::function<double(std::size_t)>& scale) const;
 
-  struct Index;  // the PCL cloud and its KD-tree
-  Points kept_;
+  struct Index;  // the points and a grid over them
   std::shared_ptr<const Index> index_;
 };
 

@@ -9,41 +9,6 @@
 
 namespace ksmc::stdlib::tabletop::perception {
 
-namespace {
-
-long cell_of(double v, double r) { return std::lround(std::floor(v / r)); }
-
-}  // namespace
-
-PointGrid::PointGrid(const Points& points, double radius) : points_(points), radius_(radius) {
-  cells_.reserve(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const auto& p = points[i];
-    cells_.emplace_back(key(cell_of(p.x(), radius), cell_of(p.y(), radius), cell_of(p.z(), radius)), static_cast<int>(i));
-  }
-  std::sort(cells_.begin(), cells_.end());
-}
-
-std::uint64_t PointGrid::key(long x, long y, long z) const {
-  // 21 bits per axis (offset): +-10 km at 1 cm cells, far beyond any table.
-  const auto u = [](long v) { return static_cast<std::uint64_t>(v + (1L << 20)) & ((1ULL << 21) - 1); };
-  return (u(x) << 42) | (u(y) << 21) | u(z);
-}
-
-void PointGrid::neighbours(const Eigen::Vector3d& p, std::vector<int>& out) const {
-  out.clear();
-  const long cx = cell_of(p.x(), radius_), cy = cell_of(p.y(), radius_), cz = cell_of(p.z(), radius_);
-  const double r2 = radius_ * radius_;
-  // The three cells along z of one (x, y) column are adjacent in key order: one search each.
-  for (long dx = -1; dx <= 1; ++dx)
-    for (long dy = -1; dy <= 1; ++dy) {
-      const std::uint64_t first = key(cx + dx, cy + dy, cz - 1), last = key(cx + dx, cy + dy, cz + 1);
-      for (auto it = std::lower_bound(cells_.begin(), cells_.end(), std::make_pair(first, -1));
-           it != cells_.end() && it->first <= last; ++it)
-        if ((points_[static_cast<std::size_t>(it->second)] - p).squaredNorm() <= r2) out.push_back(it->second);
-    }
-}
-
 std::vector<Face> planar_faces(const Points& points, const FaceOptions& o) {
   const std::size_t n = points.size();
   std::vector<Eigen::Vector3d> normal(n, Eigen::Vector3d::UnitZ());

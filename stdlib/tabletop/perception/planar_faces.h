@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "stdlib/tabletop/perception/cloud_io.h"
+#include "stdlib/tabletop/perception/point_grid.h"
 
 namespace ksmc::stdlib::tabletop::perception {
 
@@ -34,19 +35,5 @@ std::vector<Face> planar_faces(const Points& points, const FaceOptions& options 
 // One point per occupied `voxel` cube (the first in input order): a sparser copy for quick
 // tests.
 Points voxel_subsample(const Points& points, double voxel);
-
-// Neighbour queries on a uniform hash grid of cell `radius` (own points only).
-class PointGrid {
- public:
-  PointGrid(const Points& points, double radius);
-  // Indices of the points within `radius` of `p` (a fixed order for fixed input).
-  void neighbours(const Eigen::Vector3d& p, std::vector<int>& out) const;
-
- private:
-  const Points& points_;
-  double radius_;
-  std::vector<std::pair<std::uint64_t, int>> cells_;  // (cell key, point index), sorted
-  [[nodiscard]] std::uint64_t key(long x, long y, long z) const;
-};
 
 }  // namespace ksmc::stdlib::tabletop::perception

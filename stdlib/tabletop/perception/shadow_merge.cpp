@@ -4,7 +4,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
-#include <set>
+#include <unordered_map>
 #include <utility>
 
 namespace ksmc::stdlib::tabletop::perception {
@@ -12,6 +12,14 @@ namespace ksmc::stdlib::tabletop::perception {
 namespace {
 
 using Cell = std::pair<long, long>;
+struct CellHash {
+  std::size_t operator()(const Cell& c) const noexcept {
+    return std::hash<long>()(c.first) * 0x9E3779B97F4A7C15ULL ^ std::hash<long>()(c.second);
+  }
+};
+// Cell tables are only looked up, never walked in order: hashing does not change a result.
+template <class T>
+using CellMap = std::unordered_map<Cell, T, CellHash>;
 
 // 2D points hashed on a grid of `cell` m: "is any point within `cell` of q".
 class Near2 {
@@ -36,7 +44,7 @@ class Near2 {
     return {std::lround(std::floor(x / cell_)), std::lround(std::floor(y / cell_))};
   }
   double cell_;
-  std::map<Cell, std::vector<Eigen::Vector2d>> cells_;
+  CellMap<std::vector<Eigen::Vector2d>> cells_;
 };
 
 constexpr double kCell = 0.005;  // m, the footprint grid of the tops
@@ -46,8 +54,8 @@ Cell cell_of(const Eigen::Vector3d& p) {
 }
 
 // The highest point of each footprint cell.
-std::map<Cell, double> cell_tops(const Points& pts) {
-  std::map<Cell, double> top;
+CellMap<double> cell_tops(const Points& pts) {
+  CellMap<double> top;
   for (const auto& p : pts) {
     auto [it, fresh] = top.emplace(cell_of(p), p.z());
     if (!fresh) it->second = std::max(it->second, p.z());
@@ -57,13 +65,13 @@ std::map<Cell, double> cell_tops(const Points& pts) {
 
 // Points of a top at height `plane`: within `band` of it and of their cell's highest point
 // (a side face crossing that height is not a top).
-bool on_top(const Eigen::Vector3d& p, double plane, double band, const std::map<Cell, double>& tops) {
+bool on_top(const Eigen::Vector3d& p, double plane, double band, const CellMap<double>& tops) {
   return std::abs(p.z() - plane) <= band && p.z() >= tops.at(cell_of(p)) - band;
 }
 
 // The height of a cluster's widest flat top: the most common highest point over 5 mm cells
 // (4 mm bins, the higher bin on a tie).
-double widest_top(const std::map<Cell, double>& top) {
+double widest_top(const CellMap<double>& top) {
   std::map<long, int> hist;
   for (const auto& [k, z] : top) ++hist[std::lround(std::floor(z / 0.004))];
   long best = 0;
@@ -90,11 +98,10 @@ Bounds bounds_of(const Points& pts) {
 
 // True when `far` is the bare far part of a top whose near part, with the box lying on it,
 // is `near`: see the header.
-bool shadow_split(const Points& near, const Points& far, double plane, const Eigen::Vector3d& sensor,
-                  const ShadowMergeOptions& o) {
+bool shadow_split(const Points& near, const CellMap<double>& near_tops, const Points& far, const CellMap<double>& far_tops,
+                  double plane, const Eigen::Vector3d& sensor, const ShadowMergeOptions& o) {
   Near2 near_plane(o.reach), shadow(o.reach);
   std::size_t on_plane = 0, above = 0;
-  const std::map<Cell, double> near_tops = cell_tops(near), far_tops = cell_tops(far);
   for (const auto& p : near) {
     if (on_top(p, plane, o.plane_band, near_tops)) {
       near_plane.add(p.x(), p.y());
@@ -131,7 +138,11 @@ std::vector<Points> merge_shadow_split(std::vector<Points> clusters, const Eigen
   if (!o.enabled || clusters.size() < 2) return clusters;
   const std::size_t n = clusters.size();
   std::vector<Bounds> bounds;
-  for (const auto& c : clusters) bounds.push_back(bounds_of(c));
+  std::vector<CellMap<double>> tops;  // each cluster's highest point per footprint cell
+  for (const auto& c : clusters) {
+    bounds.push_back(bounds_of(c));
+    tops.push_back(cell_tops(c));
+  }
   std::vector<std::size_t> root(n);
   std::iota(root.begin(), root.end(), 0);
   const auto find = [&root](std::size_t i) {
@@ -140,11 +151,10 @@ std::vector<Points> merge_shadow_split(std::vector<Points> clusters, const Eigen
   };
   for (std::size_t f = 0; f < n; ++f) {
     // The far part is a bare top: nothing of it more than 2 x plane_band above its plane.
-    const std::map<Cell, double> tops = cell_tops(clusters[f]);
-    const double plane = widest_top(tops);
+    const double plane = widest_top(tops[f]);
     if (bounds[f].top > plane + 2.0 * o.plane_band) continue;
     std::size_t on_plane = 0;
-    for (const auto& p : clusters[f]) on_plane += on_top(p, plane, o.plane_band, tops);
+    for (const auto& p : clusters[f]) on_plane += on_top(p, plane, o.plane_band, tops[f]);
     if (on_plane < o.min_points) continue;
     for (std::size_t c = 0; c < n; ++c) {
       if (c == f || find(c) == find(f)) continue;
@@ -152,7 +162,7 @@ std::vector<Points> merge_shadow_split(std::vector<Points> clusters, const Eigen
       const Bounds& b = bounds[f];
       const Eigen::Vector2d gap = (a.lo - b.hi).cwiseMax(b.lo - a.hi).cwiseMax(0.0);
       if (gap.norm() > o.neighbourhood || a.top <= plane + o.occluder_above) continue;
-      if (shadow_split(clusters[c], clusters[f], plane, sensor, o)) root[find(f)] = find(c);
+      if (shadow_split(clusters[c], tops[c], clusters[f], tops[f], plane, sensor, o)) root[find(f)] = find(c);
     }
   }
   // Each group in the place of its first cluster; the rest appended to it in order.
