@@ -1,6 +1,7 @@
 // PointGrid answers "which points are within r of p" exactly as a scan of all points does,
 // for radii below, at and above its cell, with and without its table of column starts (a
-// cloud spread so wide that the table would be large keeps the binary search).
+// cloud spread so wide that the table would be large, or so far out that cell keys wrap,
+// keeps the binary search).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -54,7 +55,7 @@ TEST_CASE("point grid: queries of any radius equal a full scan", "[perception][g
   check_queries(border, 0.01, rng);
 }
 
-TEST_CASE("point grid: a cloud spread wide (no column table) answers the same", "[perception][grid]") {
+TEST_CASE("point grid: a cloud spread wide or far out (no column table) answers the same", "[perception][grid]") {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-0.02, 0.02);
   Points pts;
@@ -62,4 +63,9 @@ TEST_CASE("point grid: a cloud spread wide (no column table) answers the same", 
   for (int i = 0; i < 500; ++i) pts.emplace_back(u(rng), u(rng), u(rng));
   for (int i = 0; i < 500; ++i) pts.emplace_back(50.0 + u(rng), 50.0 + u(rng), u(rng));
   check_queries(pts, 0.005, rng);
+  // One clump 5.2 km out, across the keys' wrap at 2^20 cells, where key order is not
+  // column order (the table is not built).
+  Points far;
+  for (int i = 0; i < 500; ++i) far.emplace_back(5242.88 + u(rng), u(rng), u(rng));  // 2^20 cells of 5 mm
+  check_queries(far, 0.005, rng);
 }

@@ -22,6 +22,8 @@ PointGrid::PointGrid(const Points& points, double radius) : points_(points), rad
   // The column table only where it is about as small as the points (a sparse wide cloud
   // keeps the binary search).
   if (static_cast<double>(nx_) * static_cast<double>(ny_) > 4.0 * static_cast<double>(points.size()) + 65536.0) return;
+  constexpr long kHalf = 1L << 20;  // keys wrap outside [-2^20, 2^20) cells: no column order to follow
+  if (x0_ < -kHalf || x1 >= kHalf || y0_ < -kHalf || y1 >= kHalf) return;
   column_start_.assign(static_cast<std::size_t>(nx_ * ny_) + 1, 0);
   // Keys order the cells by x, then y, then z: the columns follow each other in that order.
   std::size_t k = 0;
@@ -31,6 +33,7 @@ PointGrid::PointGrid(const Points& points, double radius) : points_(points), rad
     while (k < cells_.size() && (cells_[k].first >> 21) == column) ++k;
   }
   column_start_.back() = static_cast<std::uint32_t>(k);
+  if (k != cells_.size()) column_start_.clear();  // not in column order after all: the binary search
 }
 
 std::uint64_t PointGrid::key(long x, long y, long z) const {
