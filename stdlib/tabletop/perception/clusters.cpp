@@ -12,6 +12,8 @@ namespace ksmc::stdlib::tabletop::perception {
 
 struct AboveTable::Index {
   Index(Points kept, double cell) : points(std::move(kept)), grid(points, cell) {}
+  Index(const Index&) = delete;  // the grid refers to `points`
+  Index& operator=(const Index&) = delete;
   Points points;   // the points above the table, in input order
   PointGrid grid;  // over `points`, cells of the floor tolerance
 };

@@ -17,7 +17,8 @@ struct CellHash {
     return std::hash<long>()(c.first) * 0x9E3779B97F4A7C15ULL ^ std::hash<long>()(c.second);
   }
 };
-// Cell tables are only looked up, never walked in order: hashing does not change a result.
+// Cell tables are looked up, and walked only to count (widest_top): their order does not
+// change a result, so they are hashed.
 template <class T>
 using CellMap = std::unordered_map<Cell, T, CellHash>;
 
