@@ -9,6 +9,7 @@
 #include "synthetic_cloud.h"
 
 using namespace ksmc::stdlib::tabletop::perception;
+using ksmc::stdlib::tabletop::FreeSpace;
 using ksmc::tests::perception::add_visible_box;
 
 namespace {
@@ -200,4 +201,26 @@ TEST_CASE("tilted box: a neighbour's face flush with the leaning box's side does
   CHECK(e.centre < 0.005);
   CHECK(e.angle < 1.5 * kDeg);
   CHECK(e.max_size() < 0.006);
+}
+
+TEST_CASE("tilted box: the rest of a cluster is split again as the cloud was, along a grazing top's rows",
+          "[perception][tilted]") {
+  // A leaning box, and beside it a flat top seen at a slant: rows 14 mm apart along the
+  // view, farther apart than the 8 mm tolerance (test_clusters.cpp).
+  const Eigen::Vector3d size(0.16, 0.10, 0.05);
+  Points pts;
+  add_visible_box(pts, resting(0.4, 25.0 * kDeg, size), size, 0.003, kSensor, 0.0005);
+  Points top;
+  for (double y = 0.2; y <= 0.34; y += 0.014)
+    for (double x = -0.08; x <= 0.08; x += 0.003) top.emplace_back(x, y, 0.05);
+  pts.insert(pts.end(), top.begin(), top.end());
+  FreeSpace seen;
+  seen.points = pts;
+  seen.sensor = Eigen::Vector3d(0.0, -0.8, 0.4);
+  ClusterBoxOptions o;
+  o.parts.min_points = 40;
+  const auto joined = fit_cluster_boxes(pts, o, &seen);
+  CHECK(joined.size() == 2);  // the leaning box and the top
+  // Without the sensor the rest is split by the tolerance alone: one box per row.
+  CHECK(fit_cluster_boxes(pts, o).size() > 5);
 }

@@ -19,7 +19,10 @@ std::vector<UprightBox> fit_cluster_boxes(const Points& points, const ClusterBox
         c.min_height = -1e9;
         c.max_height = 1e9;
         const Eigen::Vector2d everywhere(1e9, 1e9);
-        for (Points& rest : cluster_objects(t->rest, everywhere, c)) todo.push_back(std::move(rest));
+        // Joined along grazing tops' rows as the cloud was, where the sensor is known.
+        const AboveTable rest(t->rest, everywhere, c);
+        for (Points& part : seen != nullptr ? rest.clusters(c, seen->sensor) : rest.clusters(c))
+          todo.push_back(std::move(part));
         continue;
       }
     }

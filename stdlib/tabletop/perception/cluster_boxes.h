@@ -23,7 +23,9 @@ struct ClusterBoxOptions {
 };
 
 // Boxes of `points` (table frame), at least one when `points` is not empty. `seen`: the
-// whole cloud and the sensor, for the stacks' free-space test (stack_split.h); may be null.
+// whole cloud and the sensor, for the stacks' free-space test (stack_split.h) and for
+// splitting the rest after a tilted box along grazing tops' rows as the cloud was
+// (ClusterOptions::slant_factor); may be null (the tolerance alone).
 std::vector<UprightBox> fit_cluster_boxes(const Points& points, const ClusterBoxOptions& options = {},
                                           const FreeSpace* seen = nullptr);
 
