@@ -36,23 +36,20 @@ PlaneRect face_rect(const Points& points, const Face& f) {
   return {u, n.cross(u), r.half};
 }
 
-// Whether the points of face `f` lie on one side of face `plane`'s plane (1 % quantiles):
-// two faces of one box meet at an edge, a neighbour's face crosses the plane.
-bool one_sided(const Points& points, const Face& f, const Face& plane, double tolerance) {
-  std::vector<double> d;
+// Whether face `f` could meet face `plane` at an edge of one box, from f's distances to
+// plane's plane (1 % quantiles): its points lie on one side of it within `tolerance` (a
+// neighbour's face crosses the plane), and they reach it within `gap` (a neighbour's face
+// that merely comes near, a box leaning on the end of another, stops short of it).
+bool meets_plane(const Points& points, const Face& f, const Face& plane, double tolerance, double gap) {
+  std::vector<double> d, far;
   d.reserve(f.points.size());
-  for (int i : f.points) d.push_back((points[static_cast<std::size_t>(i)] - plane.centroid).dot(plane.normal));
-  return quantile(d, 0.01) >= -tolerance || quantile(d, 0.99) <= tolerance;
-}
-
-// Whether face `f` reaches face `plane`'s plane within `gap` (1 % quantile): two faces of
-// one box meet at their common edge, while a neighbour's face that merely comes near (a
-// box leaning on the end of another) stops short of the leaning box's plane.
-bool reaches(const Points& points, const Face& f, const Face& plane, double gap) {
-  std::vector<double> d;
-  d.reserve(f.points.size());
-  for (int i : f.points) d.push_back(std::abs((points[static_cast<std::size_t>(i)] - plane.centroid).dot(plane.normal)));
-  return quantile(d, 0.01) <= gap;
+  far.reserve(f.points.size());
+  for (int i : f.points) {
+    d.push_back((points[static_cast<std::size_t>(i)] - plane.centroid).dot(plane.normal));
+    far.push_back(std::abs(d.back()));
+  }
+  const bool one_sided = quantile(d, 0.01) >= -tolerance || quantile(d, 0.99) <= tolerance;
+  return one_sided && quantile(far, 0.01) <= gap;
 }
 
 // The largest face that is tilted, has `min_points` and is no narrower than min_face_side
@@ -181,8 +178,9 @@ std::optional<TiltedFit> fit_tilted_box(const Points& points, const TiltOptions&
   std::vector<const Face*> box_faces{&*seed};
   for (const Face& f : faces) {
     if (&f == &*seed || std::abs(f.normal.dot(seed->normal)) > std::sin(o.perpendicular_deg * kDeg)) continue;
-    if (!one_sided(points, f, *seed, o.side_tolerance) || !one_sided(points, *seed, f, o.side_tolerance)) continue;
-    if (!reaches(points, f, *seed, o.edge_gap) || !reaches(points, *seed, f, o.edge_gap)) continue;
+    if (!meets_plane(points, f, *seed, o.side_tolerance, o.edge_gap) ||
+        !meets_plane(points, *seed, f, o.side_tolerance, o.edge_gap))
+      continue;
     const bool touches = std::any_of(f.points.begin(), f.points.end(), [&](int i) {
       near_seed.neighbours(points[static_cast<std::size_t>(i)], nb);
       return !nb.empty();
