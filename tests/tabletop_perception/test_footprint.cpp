@@ -2,6 +2,8 @@
 // which a principal-axes fit flips its axes.
 #include <catch2/catch.hpp>
 
+#include <random>
+
 #include <cmath>
 #include <numbers>
 
@@ -72,4 +74,30 @@ TEST_CASE("a cluster that starts well above the table keeps its bottom", "[perce
   for (auto& p : pts) p.z() += 0.08;  // resting on something the cloud does not show
   const UprightBox b = fit_upright_box(pts);
   CHECK(b.pose.t.z() - 0.5 * b.size.z() == Approx(0.08).margin(0.003));
+}
+
+TEST_CASE("two side faces (an L) give their box's sides with faces_rect, not the L's diagonal",
+          "[perception][footprint]") {
+  // The two faces of a 100 x 56 mm box seen from one corner, a point every 2 mm with 1 mm of
+  // noise, at every turn over the quarter turn in 5 degree steps. The L's hull is a right
+  // triangle: a rectangle along its hypotenuse has the same area as the box's, so the
+  // minimal-area rectangle follows the noise.
+  std::mt19937 rng(3);
+  std::normal_distribution<double> noise(0.0, 0.001);
+  int diagonal = 0;
+  for (int k = 0; k < 18; ++k) {
+    const double yaw = k * 5.0 * std::numbers::pi / 180.0;
+    const Eigen::Vector2d u(std::cos(yaw), std::sin(yaw)), v(-u.y(), u.x());
+    std::vector<Eigen::Vector2d> l;
+    for (double s = -0.05; s <= 0.05; s += 0.002) l.push_back(s * u - 0.028 * v + Eigen::Vector2d(noise(rng), noise(rng)));
+    for (double s = -0.028; s <= 0.028; s += 0.002) l.push_back(0.05 * u + s * v + Eigen::Vector2d(noise(rng), noise(rng)));
+    const Rect2 area = min_area_rect(l);
+    diagonal += 2.0 * std::max(area.half.x(), area.half.y()) > 0.105;
+    const Rect2 faces = faces_rect(l);
+    INFO("yaw " << k * 5 << " deg");
+    CHECK(2.0 * std::max(faces.half.x(), faces.half.y()) == Approx(0.100).margin(0.004));
+    CHECK(2.0 * std::min(faces.half.x(), faces.half.y()) == Approx(0.056).margin(0.004));
+    CHECK(faces.center.norm() < 0.004);  // hull extents: the outermost noisy points
+  }
+  CHECK(diagonal > 0);
 }

@@ -15,7 +15,23 @@ double quantile_of(std::vector<double> v, double q) {
   return v[k];
 }
 
+// The top: the median height of the band just under the robust highest point.
+double top_of_heights(const std::vector<double>& z, const BoxFitOptions& options) {
+  const double high = quantile_of(z, options.top_quantile);
+  std::vector<double> band;
+  for (double h : z)
+    if (h >= high - options.top_band) band.push_back(h);
+  return quantile_of(band, 0.5);
+}
+
 }  // namespace
+
+double top_height(const Points& points, const BoxFitOptions& options) {
+  std::vector<double> z;
+  z.reserve(points.size());
+  for (const auto& p : points) z.push_back(p.z());
+  return top_of_heights(z, options);
+}
 
 UprightBox fit_upright_box(const Points& points, const BoxFitOptions& options) {
   std::vector<Eigen::Vector2d> flat;
@@ -23,13 +39,9 @@ UprightBox fit_upright_box(const Points& points, const BoxFitOptions& options) {
   flat.reserve(points.size());
   z.reserve(points.size());
   for (const auto& p : points) flat.emplace_back(p.x(), p.y()), z.push_back(p.z());
-  const Rect2 rect = min_area_rect(flat, options.footprint_trim);
+  const Rect2 rect = options.side_faces_only ? faces_rect(flat, options.footprint_trim) : min_area_rect(flat, options.footprint_trim);
 
-  const double high = quantile_of(z, options.top_quantile);
-  std::vector<double> band;
-  for (double h : z)
-    if (h >= high - options.top_band) band.push_back(h);
-  const double top = quantile_of(band, 0.5);
+  const double top = top_of_heights(z, options);
   const double low = quantile_of(z, 0.01);
   const double bottom = low > options.float_gap ? low : 0.0;
 

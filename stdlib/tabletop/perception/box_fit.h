@@ -14,6 +14,7 @@ struct BoxFitOptions {
   double top_band = 0.006;        // m; the top is the median height of the points this far below it
   double float_gap = 0.03;        // m; a cluster whose 1 % height quantile is higher starts there
   double min_size = 0.005;        // m, lower bound of every extent
+  bool side_faces_only = false;   // the points are side faces (no top): footprint by faces_rect
 };
 
 struct UprightBox {
@@ -23,5 +24,8 @@ struct UprightBox {
 
 // `points` in the table frame (z up, top at 0), at least one point.
 UprightBox fit_upright_box(const Points& points, const BoxFitOptions& options = {});
+
+// The height of the top face fit_upright_box gives `points` (at least one).
+double top_height(const Points& points, const BoxFitOptions& options = {});
 
 }  // namespace ksmc::stdlib::tabletop::perception

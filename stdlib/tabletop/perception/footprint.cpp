@@ -50,11 +50,17 @@ std::vector<Eigen::Vector2d> convex_hull(std::vector<Eigen::Vector2d> p) {
   return h;
 }
 
-Rect2 min_area_rect(const std::vector<Eigen::Vector2d>& points, double trim) {
+namespace {
+
+// The rectangle of `points`' hull extents along the hull edge direction (the sides' directions
+// of all minimal rectangles; Freeman & Shapira 1975) with the least cost(points, rectangle);
+// with `trim` > 0 each side is then pulled in to the trim / (1 - trim) quantile.
+template <class Cost>
+Rect2 best_rect(const std::vector<Eigen::Vector2d>& points, double trim, Cost cost) {
   Rect2 best;
   if (points.empty()) return best;
   const std::vector<Eigen::Vector2d> hull = convex_hull(points);
-  double best_area = std::numeric_limits<double>::infinity();
+  double best_cost = std::numeric_limits<double>::infinity();
   auto try_direction = [&](const Eigen::Vector2d& u) {
     const Eigen::Vector2d v(-u.y(), u.x());
     double lo_u = std::numeric_limits<double>::infinity(), hi_u = -lo_u, lo_v = lo_u, hi_v = -lo_u;
@@ -62,12 +68,14 @@ Rect2 min_area_rect(const std::vector<Eigen::Vector2d>& points, double trim) {
       lo_u = std::min(lo_u, q.dot(u)), hi_u = std::max(hi_u, q.dot(u));
       lo_v = std::min(lo_v, q.dot(v)), hi_v = std::max(hi_v, q.dot(v));
     }
-    const double area = (hi_u - lo_u) * (hi_v - lo_v);
-    if (area < best_area - 1e-15) {
-      best_area = area;
-      best.u = u;
-      best.half = 0.5 * Eigen::Vector2d(hi_u - lo_u, hi_v - lo_v);
-      best.center = 0.5 * (lo_u + hi_u) * u + 0.5 * (lo_v + hi_v) * v;
+    Rect2 r;
+    r.u = u;
+    r.half = 0.5 * Eigen::Vector2d(hi_u - lo_u, hi_v - lo_v);
+    r.center = 0.5 * (lo_u + hi_u) * u + 0.5 * (lo_v + hi_v) * v;
+    const double c = cost(r);
+    if (c < best_cost - 1e-15) {
+      best_cost = c;
+      best = r;
     }
   };
   if (hull.size() < 2) {
@@ -91,6 +99,23 @@ Rect2 min_area_rect(const std::vector<Eigen::Vector2d>& points, double trim) {
   }
   canonicalise(best);
   return best;
+}
+
+}  // namespace
+
+Rect2 min_area_rect(const std::vector<Eigen::Vector2d>& points, double trim) {
+  return best_rect(points, trim, [](const Rect2& r) { return r.area(); });
+}
+
+Rect2 faces_rect(const std::vector<Eigen::Vector2d>& points, double trim) {
+  return best_rect(points, trim, [&points](const Rect2& r) {
+    double sum = 0.0;
+    for (const auto& q : points) {
+      const Eigen::Vector2d d = q - r.center;
+      sum += std::min(r.half.x() - std::abs(d.dot(r.u)), r.half.y() - std::abs(d.dot(r.v())));
+    }
+    return sum;
+  });
 }
 
 }  // namespace ksmc::stdlib::tabletop::perception

@@ -31,4 +31,9 @@ std::vector<Eigen::Vector2d> convex_hull(std::vector<Eigen::Vector2d> points);
 // the points' coordinates, which discards isolated noise points at the border.
 Rect2 min_area_rect(const std::vector<Eigen::Vector2d>& points, double trim = 0.0);
 
+// The rectangle whose sides the points lie on (least summed distance to the nearest side),
+// among the same candidate directions; `trim` as above. For a box seen only by its side
+// faces: the minimal-area rectangle of an L of two faces may lie along the L's diagonal.
+Rect2 faces_rect(const std::vector<Eigen::Vector2d>& points, double trim = 0.0);
+
 }  // namespace ksmc::stdlib::tabletop::perception

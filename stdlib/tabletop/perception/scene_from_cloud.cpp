@@ -30,6 +30,8 @@ ClusterBoxOptions for_sampling(ClusterBoxOptions fit, double rho) {
   fit.stacks.cell *= rho;
   fit.stacks.column_margin *= rho;
   fit.stacks.min_points = fewer(fit.stacks.min_points);
+  fit.stacks.sides.min_top_points = fewer(fit.stacks.sides.min_top_points);
+  fit.stacks.sides.min_bin_points = fewer(fit.stacks.sides.min_bin_points);
   return fit;
 }
 

@@ -75,6 +75,14 @@ bool seen_through_below(const Rect2& column, double below, std::size_t upper_poi
   return static_cast<double>(see_through_count(under, seen)) > limit;
 }
 
+// True when the column's side faces step at the plateau below (side_steps.h): its faces
+// under that height are another box's, so it rests there.
+bool steps_at(const Points& column, double below, const StackOptions& o) {
+  for (const SideStep& s : side_steps(column, 0.0, o.sides))
+    if (std::abs(s.z - below) <= 0.5 * o.level_gap) return true;
+  return false;
+}
+
 std::vector<Eigen::Vector2d> flat(const Points& pts) {
   std::vector<Eigen::Vector2d> f;
   for (const auto& p : pts) f.emplace_back(p.x(), p.y());
@@ -85,7 +93,7 @@ std::vector<Eigen::Vector2d> flat(const Points& pts) {
 
 std::vector<UprightBox> fit_stacked_boxes(const Points& points, const BoxFitOptions& box, const StackOptions& o,
                                           const FreeSpace* seen) {
-  std::vector<UprightBox> upper;  // found from the top down
+  std::vector<std::vector<UprightBox>> upper;  // found from the top down, each lowest first
   Points rest = points;
   // The lower boxes' side faces under a resting upper box. They are kept out of the plateau
   // search (the upper box's shadow line along such a face reads as a level of its own) and
@@ -112,28 +120,29 @@ std::vector<UprightBox> fit_stacked_boxes(const Points& points, const BoxFitOpti
       if (p.z() > below + 0.5 * o.level_gap) top.push_back(p);
       else if (p.z() <= below - 0.5 * o.level_gap) below_sides.push_back(p);
     }
-    UprightBox b = fit_upright_box(top, box);
+    Points whole, reach;  // the column down to the table; and with the faces a side step may reach
+    for (const auto& p : rest) {
+      if (inside(column, {p.x(), p.y()}, o.column_margin)) whole.push_back(p);
+      if (inside(column, {p.x(), p.y()}, o.sides.max_offset)) reach.push_back(p);
+    }
+    std::vector<UprightBox> column_boxes;
     if (covered(column, under) >= o.min_support ||
-        (o.free_space && seen != nullptr && seen_through_below(column, below, top_points, o, *seen))) {  // resting on the rest: bottom at the plateau below
-      const double top_z = b.pose.t.z() + 0.5 * b.size.z();
-      b.size.z() = std::max(top_z - below, box.min_size);
-      b.pose.t.z() = below + 0.5 * b.size.z();
+        (o.free_space && seen != nullptr && seen_through_below(column, below, top_points, o, *seen)) ||
+        steps_at(reach, below, o)) {  // resting on the rest: bottom at the plateau below
+      column_boxes = fit_column(top, below, box, o.sides);
       sides = std::move(below_sides);
       if (o.lower_sides)
         for (const auto& p : rest)
           if (p.z() <= below - 0.5 * o.level_gap && inside(column, {p.x(), p.y()}, o.column_margin)) sides.push_back(p);
     } else {  // a merged neighbour standing on the table: its column goes down to the table
-      Points whole;
-      for (const auto& p : rest)
-        if (inside(column, {p.x(), p.y()}, o.column_margin)) whole.push_back(p);
-      b = fit_upright_box(whole, box);
+      column_boxes = fit_column(whole, 0.0, box, o.sides);
     }
-    upper.push_back(b);
+    upper.push_back(std::move(column_boxes));
     rest = std::move(remaining);
   }
   rest.insert(rest.end(), sides.begin(), sides.end());
-  std::vector<UprightBox> out{fit_upright_box(rest, box)};
-  out.insert(out.end(), upper.rbegin(), upper.rend());
+  std::vector<UprightBox> out = fit_column(rest, 0.0, box, o.sides);
+  for (auto it = upper.rbegin(); it != upper.rend(); ++it) out.insert(out.end(), it->begin(), it->end());
   return out;
 }
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "stdlib/tabletop/perception/box_fit.h"
+#include "stdlib/tabletop/perception/side_steps.h"
 #include "stdlib/tabletop/cloud_likelihood.h"
 
 namespace ksmc::stdlib::tabletop::perception {
@@ -36,6 +37,9 @@ struct StackOptions {
   // A resting upper box hides part of the lower one's top; the lower box's side faces under
   // it (below the plateau) stay with the lower box, so its footprint reaches under the upper.
   bool lower_sides = true;
+  // Each box found is split again where its side faces step (side_steps.h): a box resting on
+  // one of about its footprint shows no plateau of its own.
+  SideStepOptions sides;
 };
 
 // Boxes of one cluster (table frame), lowest first. Always at least one box. `seen`: the
