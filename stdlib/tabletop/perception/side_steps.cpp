@@ -172,13 +172,14 @@ std::vector<UprightBox> fit_column(const Points& points, double bottom, const Bo
   };
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<UprightBox> out;
-  double from = bottom;
+  double from = bottom, base = bottom;  // a part's lowest points, and its bottom
   for (const SideStep& s : side_steps(points, bottom, o, box.footprint_trim)) {
-    out.push_back(part(from, s.lower_top, from, s.z));
-    from = s.z;
+    out.push_back(part(from, s.lower_top, base, s.z));
+    from = s.z + o.edge_band;
+    base = s.z;
   }
   if (out.empty()) out.push_back(part(-inf, inf, bottom, inf));  // no step: the whole column
-  else out.push_back(part(from, inf, from, inf));
+  else out.push_back(part(from, inf, base, inf));
   return out;
 }
 

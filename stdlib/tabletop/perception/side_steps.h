@@ -28,6 +28,8 @@ struct SideStepOptions {
   int min_run_bins = 3;           // bins of a run on each side of a step (9 mm of face)
   double min_contrast = 5.0;      // step / (MAD of the two runs' bins + noise_floor)
   double noise_floor = 0.0005;    // m
+  double edge_band = 0.006;       // m over an interface left out of the upper box's fit (the lower
+                                  // box's top edge, seen where the upper box does not cover it)
 };
 
 // An interface between two boxes of a column: the upper box's bottom, and the height the
