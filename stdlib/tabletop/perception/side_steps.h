@@ -2,10 +2,11 @@
 // of about the same footprint hides the lower box's top, so the column has one plateau and
 // stack_split sees one box. The side faces still tell the boxes apart: below the interface
 // they are the lower box's faces, set back from the upper box's outline or standing out of
-// it by the offset and turn at which the two boxes rest. Per height bin, the median signed
-// distance of the side points to the outline of the top face is one level per box; a jump
-// between two runs of steady bins is an interface. A single box's faces keep one level (a
-// slow drift, from a slightly tilted face, is followed, not cut).
+// it by the offset and turn at which the two boxes rest. Per face of the top face's outline
+// and per height bin, the median signed distance of the side points to that face's line is
+// one level per box; a jump between two runs of steady bins is an interface. A single box's
+// faces keep one level (a slow drift, from a slightly tilted face, is followed, not cut), and
+// occlusion only changes which faces are seen at a height, not their levels.
 #pragma once
 
 #include <vector>
