@@ -1,6 +1,7 @@
 // Side steps (side_steps.h): a box resting on one of about its footprint, whose top is hidden,
 // is two boxes; a single box stays one, with depth noise and with its lower part half hidden
-// behind a box in front (occlusion changes which faces are seen, not where they are).
+// behind a box in front (occlusion changes which faces are seen, not where they are); one face
+// of a lower box under a step is not a box of its own, two faces are.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -80,4 +81,37 @@ TEST_CASE("side steps: a single box stays one box, in full view and half hidden"
     CHECK(side_steps(pts, 0.0).empty());
     CHECK(fit_stacked_boxes(pts).size() == 1);
   }
+}
+
+TEST_CASE("side steps: one face under a step is not a box; two faces are", "[perception][stack][sides]") {
+  // An upper box 100 x 60 x 30 mm resting at 40 mm: its top and the two faces towards -x and
+  // -y. Under it, the lower box's face towards -y, 8 mm in from the upper one's, and in the
+  // second case also its face towards -x, 6 mm in.
+  Points upper;
+  const double step = 0.002;
+  for (double x = -0.05; x <= 0.05; x += step)
+    for (double y = -0.03; y <= 0.03; y += step) upper.emplace_back(x, y, 0.07);
+  for (double z = 0.04; z < 0.07; z += step) {
+    for (double x = -0.05; x <= 0.05; x += step) upper.emplace_back(x, -0.03, z);
+    for (double y = -0.03; y <= 0.03; y += step) upper.emplace_back(-0.05, y, z);
+  }
+  Points one_face = upper, two_faces = upper;
+  for (double z = 0.013; z < 0.04; z += step) {
+    for (double x = -0.044; x <= 0.044; x += step) {
+      one_face.emplace_back(x, -0.022, z);
+      two_faces.emplace_back(x, -0.022, z);
+    }
+    for (double y = -0.022; y <= 0.024; y += step) two_faces.emplace_back(-0.044, y, z);
+  }
+  const SideStepOptions o;
+  REQUIRE(side_steps(one_face, 0.0, o).size() == 1);
+  const auto alone = fit_column(one_face, 0.0, {}, o);
+  REQUIRE(alone.size() == 1);
+  CHECK(bottom_of(alone[0]) == Approx(0.04).margin(0.004));  // resting on what the cloud hides
+  CHECK(alone[0].size.z() == Approx(0.03).margin(0.004));
+  const auto both = fit_column(two_faces, 0.0, {}, o);
+  REQUIRE(both.size() == 2);
+  CHECK(std::max(both[0].size.x(), both[0].size.y()) == Approx(0.088).margin(0.005));
+  CHECK(std::min(both[0].size.x(), both[0].size.y()) == Approx(0.046).margin(0.005));
+  CHECK(bottom_of(both[1]) == Approx(0.04).margin(0.004));
 }

@@ -173,12 +173,16 @@ std::vector<UprightBox> fit_column(const Points& points, double bottom, const Bo
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<UprightBox> out;
   double from = bottom, base = bottom;  // a part's lowest points, and its bottom
-  for (const SideStep& s : side_steps(points, bottom, o, box.footprint_trim)) {
-    out.push_back(part(from, s.lower_top, base, s.z));
+  const std::vector<SideStep> steps = side_steps(points, bottom, o, box.footprint_trim);
+  for (const SideStep& s : steps) {
+    const UprightBox lower = part(from, s.lower_top, base, s.z);
+    // One face seen under the step: a sliver says where a box is, not how deep it is. It is left
+    // out; the box above keeps its bottom at the step (resting on something the cloud hides).
+    if (std::min(lower.size.x(), lower.size.y()) >= o.min_lower_side) out.push_back(lower);
     from = s.z + o.edge_band;
     base = s.z;
   }
-  if (out.empty()) out.push_back(part(-inf, inf, bottom, inf));  // no step: the whole column
+  if (steps.empty()) out.push_back(part(-inf, inf, bottom, inf));  // no step: the whole column
   else out.push_back(part(from, inf, base, inf));
   return out;
 }

@@ -29,6 +29,7 @@ struct SideStepOptions {
   int min_run_bins = 3;           // bins of a run on each side of a step (9 mm of face)
   double min_contrast = 5.0;      // step / (MAD of the two runs' bins + noise_floor)
   double noise_floor = 0.0005;    // m
+  double min_lower_side = 0.012;  // m; a box under a step with a thinner footprint side is one face, left out
   double edge_band = 0.006;       // m over an interface left out of the upper box's fit (the lower
                                   // box's top edge, seen where the upper box does not cover it)
 };
