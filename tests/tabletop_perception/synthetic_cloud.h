@@ -104,6 +104,14 @@ inline pc::Points cast_view(const Eigen::Vector3d& sensor, const Eigen::Vector3d
   return out;
 }
 
+// An upright box for cast_view: (cx, cy) centre, bottom face at `bottom`, turned `yaw` about z.
+inline CastBox upright_box(double cx, double cy, double bottom, const Eigen::Vector3d& size, double yaw = 0.0) {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  pose.translation() = Eigen::Vector3d(cx, cy, bottom + 0.5 * size.z());
+  return {pose, size};
+}
+
 // Maps table-frame points into a tilted "camera" frame, so the front end must find the plane.
 inline pc::Points to_sensor(const pc::Points& pts, const Eigen::Isometry3d& sensor_from_table) {
   pc::Points out;

@@ -13,15 +13,9 @@
 using namespace ksmc::stdlib::tabletop::perception;
 using ksmc::tests::perception::CastBox;
 using ksmc::tests::perception::cast_view;
+using ksmc::tests::perception::upright_box;
 
 namespace {
-
-CastBox upright(double cx, double cy, double bottom, double yaw, const Eigen::Vector3d& size) {
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  pose.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  pose.translation() = Eigen::Vector3d(cx, cy, bottom + 0.5 * size.z());
-  return {pose, size};
-}
 
 // A rendered view (occlusion included) with 1 mm of depth noise along the rays; the points
 // above 12 mm within `reach` of (cx, cy) in x and y, as one cluster.
@@ -44,8 +38,8 @@ double bottom_of(const UprightBox& b) { return b.pose.t.z() - 0.5 * b.size.z(); 
 TEST_CASE("side steps: a box resting on one of about its footprint is two boxes", "[perception][stack][sides]") {
   // A 112 x 66 x 29 mm box on a 100 x 56 x 38 mm one, turned 3 degrees and set off by 2 mm:
   // it hides the whole lower top, so there is one plateau.
-  const Points pts = view({upright(0.0, 0.0, 0.0, 0.3, {0.100, 0.056, 0.038}),
-                           upright(-0.002, 0.001, 0.038, 0.35, {0.112, 0.066, 0.029})},
+  const Points pts = view({upright_box(0.0, 0.0, 0.0, {0.100, 0.056, 0.038}, 0.3),
+                           upright_box(-0.002, 0.001, 0.038, {0.112, 0.066, 0.029}, 0.35)},
                           0.0, 0.0, 0.15);
   const std::vector<SideStep> steps = side_steps(pts, 0.0);
   REQUIRE(steps.size() == 1);
@@ -70,13 +64,13 @@ TEST_CASE("side steps: a box resting on one of about its footprint is two boxes"
 
 TEST_CASE("side steps: a single box stays one box, in full view and half hidden", "[perception][stack][sides]") {
   SECTION("in full view, with depth noise") {
-    const Points pts = view({upright(0.0, 0.0, 0.0, 0.5, {0.07, 0.09, 0.16})}, 0.0, 0.0, 0.1);
+    const Points pts = view({upright_box(0.0, 0.0, 0.0, {0.07, 0.09, 0.16}, 0.5)}, 0.0, 0.0, 0.1);
     CHECK(side_steps(pts, 0.0).empty());
     CHECK(fit_stacked_boxes(pts).size() == 1);
   }
   SECTION("its lower half behind a box in front, which is not in the cluster") {
     // The front box, 8 cm tall, hides the lower part of one face only.
-    const Points pts = view({upright(0.0, 0.0, 0.0, 0.5, {0.07, 0.09, 0.16}), upright(0.07, -0.09, 0.0, 0.2, {0.06, 0.05, 0.08})},
+    const Points pts = view({upright_box(0.0, 0.0, 0.0, {0.07, 0.09, 0.16}, 0.5), upright_box(0.07, -0.09, 0.0, {0.06, 0.05, 0.08}, 0.2)},
                             0.0, 0.0, 0.06);
     CHECK(side_steps(pts, 0.0).empty());
     CHECK(fit_stacked_boxes(pts).size() == 1);

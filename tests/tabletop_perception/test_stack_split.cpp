@@ -11,6 +11,7 @@
 using namespace ksmc::stdlib::tabletop::perception;
 using ksmc::tests::perception::add_box;
 using ksmc::tests::perception::CastBox;
+using ksmc::tests::perception::upright_box;
 using ksmc::stdlib::tabletop::FreeSpace;
 
 namespace {
@@ -54,11 +55,6 @@ TEST_CASE("stack split: touching neighbours of different heights both stand on t
 }
 
 namespace {
-CastBox upright(double cx, double cy, double bottom, const Eigen::Vector3d& size) {
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  pose.translation() = Eigen::Vector3d(cx, cy, bottom + 0.5 * size.z());
-  return {pose, size};
-}
 // The free space of a rendered view, and the points of its objects (above 12 mm).
 struct View {
   FreeSpace seen;
@@ -78,7 +74,7 @@ TEST_CASE("stack split: a box overhanging the box it rests on rests on it (the s
           "[perception][stack]") {
   // Lower box 20 x 14 x 6 cm; the upper 24 x 8 x 5 cm lies across its edge: 37.5 % of its
   // footprint is over the lower box, the rest overhangs the table.
-  const View v = rendered({upright(0.0, 0.0, 0.0, {0.2, 0.14, 0.06}), upright(0.13, 0.0, 0.06, {0.24, 0.08, 0.05})});
+  const View v = rendered({upright_box(0.0, 0.0, 0.0, {0.2, 0.14, 0.06}), upright_box(0.13, 0.0, 0.06, {0.24, 0.08, 0.05})});
   const auto boxes = fit_stacked_boxes(v.cluster, {}, {}, &v.seen);
   REQUIRE(boxes.size() == 2);
   CHECK(boxes[1].pose.t.z() - 0.5 * boxes[1].size.z() == Approx(0.06).margin(0.012));
@@ -92,7 +88,7 @@ TEST_CASE("stack split: a box overhanging the box it rests on rests on it (the s
 }
 
 TEST_CASE("stack split: a taller neighbour the sensor sees down to the table stands on it", "[perception][stack]") {
-  const View v = rendered({upright(0.0, 0.0, 0.0, {0.1, 0.1, 0.05}), upright(0.0855, 0.0, 0.0, {0.07, 0.07, 0.18})});
+  const View v = rendered({upright_box(0.0, 0.0, 0.0, {0.1, 0.1, 0.05}), upright_box(0.0855, 0.0, 0.0, {0.07, 0.07, 0.18})});
   const auto boxes = fit_stacked_boxes(v.cluster, {}, {}, &v.seen);
   REQUIRE(boxes.size() == 2);
   for (const auto& b : boxes) CHECK(b.pose.t.z() - 0.5 * b.size.z() == Approx(0.0).margin(0.005));
@@ -115,7 +111,7 @@ TEST_CASE("stack split: the lower box keeps its side faces under a resting box t
   // Lower box 20 x 10 x 6 cm; the upper 12 x 16 x 5 cm lies across its +x half and overhangs
   // its width by 3 cm on each side: the lower box's top is seen only on its -x half, its sides
   // on the +x half only below the upper box.
-  const View v = rendered({upright(0.0, 0.0, 0.0, {0.2, 0.1, 0.06}), upright(0.06, 0.0, 0.06, {0.12, 0.16, 0.05})});
+  const View v = rendered({upright_box(0.0, 0.0, 0.0, {0.2, 0.1, 0.06}), upright_box(0.06, 0.0, 0.06, {0.12, 0.16, 0.05})});
   const auto boxes = fit_stacked_boxes(v.cluster, {}, {}, &v.seen);
   REQUIRE(boxes.size() == 2);
   CHECK(boxes[0].size.z() == Approx(0.06).margin(0.005));
