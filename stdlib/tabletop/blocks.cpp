@@ -5,6 +5,7 @@
 #include <limits>
 #include <vector>
 
+#include "stdlib/tabletop/extract_blocks.h"
 #include "stdlib/tabletop/extract_contact.h"
 #include "stdlib/tabletop/extract_higher.h"
 #include "stdlib/tabletop/extract_intersect.h"
@@ -170,6 +171,16 @@ bool snugger(const Scene& s, std::int32_t a, std::int32_t b, double eps, double 
   s.note_hover_tolerance(eps);  // touching_row then tracks the bodies this atom reads
   const double gap_a = seat_gap(s, a, eps), gap_b = seat_gap(s, b, eps);
   return std::isfinite(gap_b) && gap_a + margin * s.gap_sigma() < gap_b;
+}
+
+bool blocks(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, double margin, int min_keypoints,
+            double min_fraction) {
+  // b's keypoints are an object's: its body's, at the pose b stands for.
+  if (pose_b.body < 1 || pose_b.body != size_b.body || pose_a.body == pose_b.body || s.is_table(pose_a.body)) return false;
+  const SceneObject& seen = s.input().objects[static_cast<std::size_t>(pose_b.body - 1)];
+  const Eigen::Vector3d camera = s.input().table_in_camera.inverse().t;
+  return extract_blocks(box_of(s, pose_a, size_a), *pose_b.pose, seen.keypoints_model, camera, margin, min_keypoints,
+                        min_fraction);
 }
 
 }  // namespace obb

@@ -116,6 +116,11 @@ bool leaning(const Scene& s, std::int32_t o, double tol, double eps);
 // the scene's gap noise (Scene::gap_sigma). False when either rests on no visible body (it
 // may rest on a hidden one). It reads the bodies a and b touch, like overhang.
 bool snugger(const Scene& s, std::int32_t a, std::int32_t b, double eps, double margin);
+// Box a stands between the camera and at least min_keypoints (and min_fraction) of object
+// b's keypoints, by its core shrunk by margin [m] and up to margin before each keypoint
+// (extract_blocks.h). False for the table and for one body.
+bool blocks(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, double margin, int min_keypoints,
+            double min_fraction);
 }  // namespace obb
 
 namespace scene {

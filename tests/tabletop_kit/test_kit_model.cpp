@@ -298,6 +298,9 @@ TEST_CASE("prior mln is the log-weight of the most probable world given the evid
       e.set(gen::kPred_overlap, xy,
             a != b && tt::extract_overlap(ev.boxes[a], ev.boxes[b], model.block_scene().gap_sigma(), 0.5));
       e.set(gen::kPred_flatter, xy, tt::extract_flatter(ev.boxes[a], ev.boxes[b], 0.008726646259971648));
+      // blocks as domains/tabletop.ksm extracts it (6 mm margin, 3 keypoints, a tenth of them).
+      const blk::Scene& bs = model.block_scene();
+      e.set(gen::kPred_blocks, xy, blk::obb::blocks(bs, bs.se3(a), bs.vec3(a), bs.se3(b), bs.vec3(b), 0.006, 3, 0.1));
     }
   }
   const mln::Grounding g = mln::ground(program, domain, e);  // the generic grounder

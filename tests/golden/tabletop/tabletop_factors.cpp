@@ -24,6 +24,7 @@ constexpr double kW_falseest_cfb1 = 2.1972245773362196;  // prob 0.9
 constexpr double kW_falseest_hidden_ead4 = 2.1972245773362196;  // prob 0.9
 constexpr double kW_falseest_4cf5 = 2.9444389791664394;  // prob 0.95
 constexpr double kW_falseest_8a20 = 1.0986122886681098;  // prob 0.75
+constexpr double kW_falseest_6f09 = 2.1972245773362196;  // prob 0.9
 
 }  // namespace
 
@@ -46,6 +47,7 @@ const mln::Program& program() {
     p.add_predicate({"overhang", {kType_object}, false, false, -1});
     p.add_predicate({"leaning", {kType_object}, false, false, -1});
     p.add_predicate({"snugger", {kType_object, kType_object}, false, false, -1});
+    p.add_predicate({"blocks", {kType_object, kType_object}, false, false, -1});
     // higher_95b7: hard !higher(o, o)
     p.add_clause({"higher_95b7",
                   {{"o", kType_object, false}},
@@ -180,6 +182,11 @@ const mln::Program& program() {
                   {{"a", kType_object, false}, {"b", kType_object, false}},
                   {{kPred_intersect, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_stable, true, {mln::Term::var(0)}}, {kPred_stable, true, {mln::Term::var(1)}}, {kPred_snugger, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_falseEst, false, {mln::Term::var(1)}}},
                   kW_falseest_8a20, false, "intersect(a, b) ^ stable(a) ^ stable(b) ^ snugger(a, b) => falseEst(b)", {"domains/tabletop.ksm", 0}});
+    // falseest_6f09: blocks(a, b) => falseEst(a) v falseEst(b)
+    p.add_clause({"falseest_6f09",
+                  {{"a", kType_object, false}, {"b", kType_object, false}},
+                  {{kPred_blocks, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_falseEst, false, {mln::Term::var(0)}}, {kPred_falseEst, false, {mln::Term::var(1)}}},
+                  kW_falseest_6f09, false, "blocks(a, b) => falseEst(a) v falseEst(b)", {"domains/tabletop.ksm", 0}});
     return p;
   }();
   return p;
@@ -627,6 +634,23 @@ void ground_falseest_8a20(mln::FactorContext& g, std::int32_t clause) {
   }
 }
 
+// falseest_6f09: blocks(a, b) => falseEst(a) v falseEst(b)
+void ground_falseest_6f09(mln::FactorContext& g, std::int32_t clause) {
+  const std::int32_t n_object = g.size(kType_object);
+  for (std::int32_t v_a = 0; v_a < n_object; ++v_a) {
+    for (std::int32_t v_b = 0; v_b < n_object; ++v_b) {
+      if (!g.ev(kPred_blocks, std::int64_t{v_a} * n_object + v_b)) {  // !blocks(a, b)
+        g.satisfied(kW_falseest_6f09);
+        continue;
+      }
+      g.begin();
+      if (g.query(kPred_falseEst, v_a, false)) { g.satisfied(kW_falseest_6f09); continue; }  // falseEst(a)
+      if (g.query(kPred_falseEst, v_b, false)) { g.satisfied(kW_falseest_6f09); continue; }  // falseEst(b)
+      g.soft(kW_falseest_6f09, clause);
+    }
+  }
+}
+
 }  // namespace
 
 mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) {
@@ -660,6 +684,7 @@ mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) 
   ground_falseest_hidden_ead4(g, clause++);
   ground_falseest_4cf5(g, clause++);
   ground_falseest_8a20(g, clause++);
+  ground_falseest_6f09(g, clause++);
   mln::fold_forced_atoms(grounding);
   return grounding;
 }

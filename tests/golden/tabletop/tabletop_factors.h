@@ -29,6 +29,7 @@ enum Pred : std::int32_t {
   kPred_overhang = 12,  // evidence overhang(object)
   kPred_leaning = 13,  // evidence leaning(object)
   kPred_snugger = 14,  // evidence snugger(object, object)
+  kPred_blocks = 15,  // evidence blocks(object, object)
 };
 
 // The clause program this file was generated from: names, weights, source locations.

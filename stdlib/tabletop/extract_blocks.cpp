@@ -1,0 +1,55 @@
+#include "stdlib/tabletop/extract_blocks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace ksmc::stdlib::tabletop {
+
+namespace {
+
+// Length of the segment a + s (b - a), s in [0, 1], inside the axis-aligned box [-h, h].
+double length_inside(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& h) {
+  const Eigen::Vector3d d = b - a;
+  double lo = 0.0, hi = 1.0;
+  for (int k = 0; k < 3; ++k) {
+    if (std::abs(d[k]) < 1e-15) {
+      if (std::abs(a[k]) > h[k]) return 0.0;
+      continue;
+    }
+    double s0 = (-h[k] - a[k]) / d[k], s1 = (h[k] - a[k]) / d[k];
+    if (s0 > s1) std::swap(s0, s1);
+    lo = std::max(lo, s0);
+    hi = std::min(hi, s1);
+  }
+  return hi > lo ? (hi - lo) * d.norm() : 0.0;
+}
+
+}  // namespace
+
+int keypoints_behind(const Obb& front, const Pose& seen_pose, std::span<const Eigen::Vector3d> model_points,
+                     const Eigen::Vector3d& camera, double margin) {
+  const Eigen::Vector3d core = front.half.array() - margin;
+  if ((core.array() <= 0.0).any()) return 0;
+  const Eigen::Vector3d eye = front.axes.transpose() * (camera - front.center);
+  int hidden = 0;
+  for (const Eigen::Vector3d& m : model_points) {
+    const Eigen::Vector3d p = seen_pose.q * m + seen_pose.t;
+    const double range = (p - camera).norm();
+    if (range <= margin) continue;
+    // The line of sight up to `margin` before the keypoint, in front's frame.
+    const Eigen::Vector3d end = front.axes.transpose() * (camera + (1.0 - margin / range) * (p - camera) - front.center);
+    hidden += length_inside(eye, end, core) > 0.0;
+  }
+  return hidden;
+}
+
+bool extract_blocks(const Obb& front, const Pose& seen_pose, std::span<const Eigen::Vector3d> model_points,
+                    const Eigen::Vector3d& camera, double margin, int min_keypoints, double min_fraction) {
+  if (model_points.empty()) return false;
+  const int hidden = keypoints_behind(front, seen_pose, model_points, camera, margin);
+  return hidden >= std::max(min_keypoints, 1) &&
+         static_cast<double>(hidden) >= min_fraction * static_cast<double>(model_points.size());
+}
+
+}  // namespace ksmc::stdlib::tabletop
