@@ -183,7 +183,10 @@ ChainResult Engine::run_chain(unsigned chain, const EngineConfig& cfg, Monitor& 
       } else if (!(lp > kNegInf)) {
         accept = true;   // leaving an impossible initial state
       } else {
-        const double log_alpha = (new_lp - lp) + (p.log_q_bwd - p.log_q_fwd) +
+        // The change of each term, not of their sums: a constant in the prior (rules whose
+        // evidence is the same in every state) then cancels exactly, and cannot move the chain
+        // by rounding, which at log_alpha = 0 decides whether a uniform is drawn.
+        const double log_alpha = ((new_ll - ll) + (new_prior - lprior)) + (p.log_q_bwd - p.log_q_fwd) +
                                  schedule_.log_selection_ratio(row, k) - p.log_screened;
         accept = log_alpha >= 0.0 || std::log(rng.uniform_pos()) < log_alpha;
       }
