@@ -5,18 +5,9 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "stdlib/tabletop/line_of_sight.h"
+
 namespace ksmc::stdlib::tabletop {
-
-namespace {
-
-// A vector in the box's axes. Three dot products, not axes.transpose() * v: GCC inlines
-// these at -O2 in this file and left the general product out of line (2x the time per
-// point in bench_tabletop_perception's likelihood).
-Eigen::Vector3d in_box_axes(const Obb& box, const Eigen::Vector3d& v) {
-  return {box.axes.col(0).dot(v), box.axes.col(1).dot(v), box.axes.col(2).dot(v)};
-}
-
-}  // namespace
 
 double surface_distance(const Obb& box, const Eigen::Vector3d& p) {
   const Eigen::Vector3d local = in_box_axes(box, p - box.center);
@@ -36,34 +27,6 @@ double cloud_log_likelihood(const Points& points, const Obb& box, const CloudLik
   }
   return sum;
 }
-
-namespace {
-
-// Whether the segment sensor -> p (stopping `margin` before p) passes through the box;
-// `o` is the sensor in the box frame.
-bool segment_crosses(const Obb& box, const Eigen::Vector3d& o, const Eigen::Vector3d& sensor, const Eigen::Vector3d& p,
-                     double margin) {
-  const Eigen::Vector3d seg = p - sensor;
-  const double len = seg.norm();
-  if (len <= margin) return false;
-  const double reach = 1.0 - margin / len;  // segment parameter where the check stops
-  const Eigen::Vector3d d = in_box_axes(box, seg);
-  double enter = 0.0, leave = reach;
-  for (int k = 0; k < 3; ++k) {
-    if (std::abs(d[k]) < 1e-15) {
-      if (std::abs(o[k]) > box.half[k]) return false;
-      continue;
-    }
-    double s0 = (-box.half[k] - o[k]) / d[k], s1 = (box.half[k] - o[k]) / d[k];
-    if (s0 > s1) std::swap(s0, s1);
-    enter = std::max(enter, s0);
-    leave = std::min(leave, s1);
-    if (enter > leave) return false;
-  }
-  return true;
-}
-
-}  // namespace
 
 std::size_t see_through_count(const Obb& box, const FreeSpace& fs) {
   const Eigen::Vector3d o = in_box_axes(box, fs.sensor - box.center);

@@ -3,26 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "stdlib/tabletop/line_of_sight.h"
+
 namespace ksmc::stdlib::tabletop {
 
 namespace {
-
-// Length of the segment a + s (b - a), s in [0, 1], inside the axis-aligned box [-h, h].
-double length_inside(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& h) {
-  const Eigen::Vector3d d = b - a;
-  double lo = 0.0, hi = 1.0;
-  for (int k = 0; k < 3; ++k) {
-    if (std::abs(d[k]) < 1e-15) {
-      if (std::abs(a[k]) > h[k]) return 0.0;
-      continue;
-    }
-    double s0 = (-h[k] - a[k]) / d[k], s1 = (h[k] - a[k]) / d[k];
-    if (s0 > s1) std::swap(s0, s1);
-    lo = std::max(lo, s0);
-    hi = std::min(hi, s1);
-  }
-  return hi > lo ? (hi - lo) * d.norm() : 0.0;
-}
 
 // False only when no line of sight from `camera` to a point within `seen_radius` of `seen_centre`
 // can pass within `front_radius` of `front_centre`: the front sphere lies beyond all of them, or
@@ -46,16 +31,12 @@ int keypoints_behind(const Obb& front, const Pose& seen_pose, std::span<const Ei
   double seen_radius = 0.0;
   for (const Eigen::Vector3d& m : model_points) seen_radius = std::max(seen_radius, m.norm());
   if (!sight_may_cross(camera, seen_pose.t, seen_radius, front.center, core.norm())) return 0;
-  const Eigen::Vector3d eye = front.axes.transpose() * (camera - front.center);
+  Obb shrunk = front;
+  shrunk.half = core;
+  const Eigen::Vector3d eye = in_box_axes(shrunk, camera - shrunk.center);
   int hidden = 0;
-  for (const Eigen::Vector3d& m : model_points) {
-    const Eigen::Vector3d p = seen_pose.q * m + seen_pose.t;
-    const double range = (p - camera).norm();
-    if (range <= margin) continue;
-    // The line of sight up to `margin` before the keypoint, in front's frame.
-    const Eigen::Vector3d end = front.axes.transpose() * (camera + (1.0 - margin / range) * (p - camera) - front.center);
-    hidden += length_inside(eye, end, core) > 0.0;
-  }
+  for (const Eigen::Vector3d& m : model_points)
+    hidden += segment_crosses(shrunk, eye, camera, seen_pose.q * m + seen_pose.t, margin) ? 1 : 0;
   return hidden;
 }
 
