@@ -1,6 +1,6 @@
 // The table-top knowledge base of domains/tabletop.ksm built as a runtime Program by hand:
 // the seed's Table 4.3 (DESIGN.md section 3, r1..r16) plus the domain file's additions
-// r17..r26 and r28 (docs/tabletop_kit.md, "Knowledge base"). 27 rules; r10's conjunctive
+// r17..r26, r28 and r29 (docs/tabletop_kit.md, "Knowledge base"). 28 rules; r10's conjunctive
 // consequent becomes two clauses (r10a, r10b).
 // Soft weights are log-odds: prob p -> log(p / (1 - p)).
 #pragma once
@@ -97,7 +97,7 @@ struct TabletopKb {
          {{intersect, true, {0, 1}}, {false_est, false, {0}}, {false_est, false, {1}}});
     rule("r15", 24, 0.7, "supportive(o1) => !falseEst(o1)", 1, {{supportive, true, {0}}, {false_est, true, {0}}});
     rule("r16", 25, 0.9, "stable(o1) => !falseEst(o1)", 1, {{stable, true, {0}}, {false_est, true, {0}}});
-    // Additions of domains/tabletop.ksm (its lines 41-95).
+    // Additions of domains/tabletop.ksm (its lines 41-102).
     rule("r17", 41, 0.9, "!supported(o1)", 1, {{supported, true, {0}}});
     rule("r18", 46, 0.9, "stable(o1) ^ !table(o1) => supported(o1) v hidden(o1) v falseEst(o1)", 1,
          {{stable, true, {0}}, {table, false, {0}}, {supported, false, {0}}, {hidden, false, {0}},
@@ -119,6 +119,8 @@ struct TabletopKb {
           {false_est, false, {1}}});
     rule("r28", 95, 0.9, "blocks(o1, o2) => falseEst(o1) v falseEst(o2)", 2,
          {{blocks, true, {0, 1}}, {false_est, false, {0}}, {false_est, false, {1}}});
+    rule("r29", 102, 0.75, "blocks(o1, o2) ^ !blocks(o2, o1) => falseEst(o1)", 2,
+         {{blocks, true, {0, 1}}, {blocks, false, {1, 0}}, {false_est, false, {0}}});
   }
 };
 

@@ -49,7 +49,7 @@ struct KsmValues {
 
 // A literal reading of the seed: 3 deg, 4 mm, 4 mm, plain Gaussian (sigma 1 px). The seed has
 // no overlap / flatter / overhang / leaning / snugger / blocks evidence; the domain file's
-// values serve its rules r23-r26 and r28.
+// values serve its rules r23-r26, r28 and r29.
 struct SeedValues {
   static constexpr double stable_tol = 0.05235987755982988;
   static constexpr double contact_eps = 0.004;

@@ -25,6 +25,7 @@ constexpr double kW_falseest_hidden_ead4 = 2.1972245773362196;  // prob 0.9
 constexpr double kW_falseest_4cf5 = 2.9444389791664394;  // prob 0.95
 constexpr double kW_falseest_8a20 = 1.0986122886681098;  // prob 0.75
 constexpr double kW_falseest_6f09 = 2.1972245773362196;  // prob 0.9
+constexpr double kW_falseest_71e7 = 1.0986122886681098;  // prob 0.75
 
 }  // namespace
 
@@ -187,6 +188,11 @@ const mln::Program& program() {
                   {{"a", kType_object, false}, {"b", kType_object, false}},
                   {{kPred_blocks, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_falseEst, false, {mln::Term::var(0)}}, {kPred_falseEst, false, {mln::Term::var(1)}}},
                   kW_falseest_6f09, false, "blocks(a, b) => falseEst(a) v falseEst(b)", {"domains/tabletop.ksm", 0}});
+    // falseest_71e7: blocks(a, b) ^ !blocks(b, a) => falseEst(a)
+    p.add_clause({"falseest_71e7",
+                  {{"a", kType_object, false}, {"b", kType_object, false}},
+                  {{kPred_blocks, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_blocks, false, {mln::Term::var(1), mln::Term::var(0)}}, {kPred_falseEst, false, {mln::Term::var(0)}}},
+                  kW_falseest_71e7, false, "blocks(a, b) ^ !blocks(b, a) => falseEst(a)", {"domains/tabletop.ksm", 0}});
     return p;
   }();
   return p;
@@ -651,6 +657,26 @@ void ground_falseest_6f09(mln::FactorContext& g, std::int32_t clause) {
   }
 }
 
+// falseest_71e7: blocks(a, b) ^ !blocks(b, a) => falseEst(a)
+void ground_falseest_71e7(mln::FactorContext& g, std::int32_t clause) {
+  const std::int32_t n_object = g.size(kType_object);
+  for (std::int32_t v_a = 0; v_a < n_object; ++v_a) {
+    for (std::int32_t v_b = 0; v_b < n_object; ++v_b) {
+      if (!g.ev(kPred_blocks, std::int64_t{v_a} * n_object + v_b)) {  // !blocks(a, b)
+        g.satisfied(kW_falseest_71e7);
+        continue;
+      }
+      if (g.ev(kPred_blocks, std::int64_t{v_b} * n_object + v_a)) {  // blocks(b, a)
+        g.satisfied(kW_falseest_71e7);
+        continue;
+      }
+      g.begin();
+      if (g.query(kPred_falseEst, v_a, false)) { g.satisfied(kW_falseest_71e7); continue; }  // falseEst(a)
+      g.soft(kW_falseest_71e7, clause);
+    }
+  }
+}
+
 }  // namespace
 
 mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) {
@@ -685,6 +711,7 @@ mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) 
   ground_falseest_4cf5(g, clause++);
   ground_falseest_8a20(g, clause++);
   ground_falseest_6f09(g, clause++);
+  ground_falseest_71e7(g, clause++);
   mln::fold_forced_atoms(grounding);
   return grounding;
 }
