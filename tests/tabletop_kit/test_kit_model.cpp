@@ -57,6 +57,13 @@ bool holds(const std::string& db, const std::string& atom) {
 
 kit::RefineKernel refine_kernel(bool competes = true) { return kit::RefineKernel(ksm_binding().kernels.at(0), competes); }
 
+// P(false) of an object of a result, by id.
+auto false_probs(tt::TabletopResult r) {
+  return [r = std::move(r)](const char* id) {
+    return r.probabilities.at(static_cast<std::size_t>(r.scene.find(id))).false_prob;
+  };
+}
+
 // A 10 x 10 x 20 cm wall on the table; a 2 x 10 x 20 cm board leaning on it, tilted 20 deg, its
 // foot on the table and its top edge against the wall; and, with `cutter`, a 6 cm cube standing
 // level on the table 2 cm deep in the board (table frame, no keypoints).
@@ -160,8 +167,7 @@ TEST_CASE("r25: a leaning box a level estimate cuts into is real, the level one 
   INFO(ev);
   REQUIRE(holds(ev, "intersect(board,cube)"));
   REQUIRE(holds(ev, "leaning(board)"));  // a cut into it is not what holds it
-  const tt::TabletopResult r = kit::result_of(cut);
-  const auto p_false = [&](const char* id) { return r.probabilities.at(static_cast<std::size_t>(r.scene.find(id))).false_prob; };
+  const auto p_false = false_probs(kit::result_of(cut));
   CHECK(p_false("board") < 0.4);  // decided: real
   // The cube is the likelier false estimate, but not decided: r14 leaves "neither false" some
   // weight, and r16 defends a level box on the table almost as much as r25 a leaning one.
@@ -184,8 +190,7 @@ TEST_CASE("r26: of two level boxes cutting each other, the one sitting more loos
   REQUIRE(holds(ev, "contact(loose,table)"));
   REQUIRE(holds(ev, "higher(snug,table)"));
   REQUIRE(holds(ev, "higher(loose,table)"));
-  const tt::TabletopResult r = kit::result_of(m);
-  const auto p_false = [&](const char* id) { return r.probabilities.at(static_cast<std::size_t>(r.scene.find(id))).false_prob; };
+  const auto p_false = false_probs(kit::result_of(m));
   CHECK(p_false("loose") > 0.6);  // decided: false
   CHECK(p_false("snug") < 0.4);   // decided: real
 }
@@ -205,8 +210,7 @@ TEST_CASE("r29: of two estimates on one line of sight, the one in front is the l
   REQUIRE_FALSE(holds(ev, "flatter(copy,real)"));
   REQUIRE_FALSE(holds(ev, "snugger(real,copy)"));
   REQUIRE_FALSE(holds(ev, "snugger(copy,real)"));
-  const tt::TabletopResult r = kit::result_of(m);
-  const auto p_false = [&](const char* id) { return r.probabilities.at(static_cast<std::size_t>(r.scene.find(id))).false_prob; };
+  const auto p_false = false_probs(kit::result_of(m));
   CHECK(p_false("copy") > 0.6);  // decided: false
   CHECK(p_false("real") < 0.4);  // decided: real
 }
