@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "stdlib/tabletop/extract_blocks.h"
+#include "stdlib/tabletop/extract_hides.h"
 #include "stdlib/tabletop/extract_contact.h"
 #include "stdlib/tabletop/extract_higher.h"
 #include "stdlib/tabletop/extract_intersect.h"
@@ -181,6 +182,14 @@ bool blocks(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, do
   const Eigen::Vector3d camera = s.input().table_in_camera.inverse().t;
   return extract_blocks(box_of(s, pose_a, size_a), *pose_b.pose, seen.keypoints_model, camera, margin, min_keypoints,
                         min_fraction);
+}
+
+bool hides(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, double margin, double min_expected) {
+  if (pose_b.body < 1 || pose_b.body != size_b.body || pose_a.body == pose_b.body || s.is_table(pose_a.body)) return false;
+  const SceneObject& seen = s.input().objects[static_cast<std::size_t>(pose_b.body - 1)];
+  const Eigen::Vector3d camera = s.input().table_in_camera.inverse().t;
+  return extract_hides(box_of(s, pose_a, size_a), box_of(s, pose_b, size_b), static_cast<int>(seen.keypoints_model.size()),
+                       camera, margin, min_expected);
 }
 
 }  // namespace obb

@@ -121,6 +121,11 @@ bool snugger(const Scene& s, std::int32_t a, std::int32_t b, double eps, double 
 // (extract_blocks.h). False for the table and for one body.
 bool blocks(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, double margin, int min_keypoints,
             double min_fraction);
+// Box a stands in front of the part of object b's camera-facing surface where b, at the
+// density of its keypoints, would show at least min_expected keypoints; a counts by its core
+// shrunk by margin [m] (extract_hides.h). False for the table, for one body and for an object
+// without keypoints.
+bool hides(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, double margin, double min_expected);
 }  // namespace obb
 
 namespace scene {

@@ -1,28 +1,10 @@
 #include "stdlib/tabletop/extract_blocks.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include "stdlib/tabletop/line_of_sight.h"
 
 namespace ksmc::stdlib::tabletop {
-
-namespace {
-
-// False only when no line of sight from `camera` to a point within `seen_radius` of `seen_centre`
-// can pass within `front_radius` of `front_centre`: the front sphere lies beyond all of them, or
-// outside the cone of those lines. A cheap test that skips the pairs nowhere near each other.
-bool sight_may_cross(const Eigen::Vector3d& camera, const Eigen::Vector3d& seen_centre, double seen_radius,
-                     const Eigen::Vector3d& front_centre, double front_radius) {
-  const Eigen::Vector3d to_seen = seen_centre - camera, to_front = front_centre - camera;
-  const double d_seen = to_seen.norm(), d_front = to_front.norm();
-  if (d_seen <= seen_radius || d_front <= front_radius) return true;  // the camera inside a sphere
-  if (d_front - front_radius > d_seen + seen_radius) return false;     // behind every keypoint
-  const double cosine = std::clamp(to_seen.dot(to_front) / (d_seen * d_front), -1.0, 1.0);
-  return std::acos(cosine) <= std::asin(seen_radius / d_seen) + std::asin(front_radius / d_front);
-}
-
-}  // namespace
 
 int keypoints_behind(const Obb& front, const Pose& seen_pose, std::span<const Eigen::Vector3d> model_points,
                      const Eigen::Vector3d& camera, double margin) {

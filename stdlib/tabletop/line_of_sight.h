@@ -1,8 +1,8 @@
 // Lines of sight through boxes: whether the segment from a sensor to an observed point passes
-// through a box before the point. A seen point has nothing solid on that segment, so both the
-// cloud likelihood's free-space term (cloud_likelihood.h: rays a box blocks) and the keypoint
-// evidence `obb.blocks` (extract_blocks.h) count such crossings. Header-only: the likelihood
-// calls it once per ray and box, and GCC inlines it there.
+// through a box before the point. A seen point has nothing solid on that segment, so the cloud
+// likelihood's free-space term (cloud_likelihood.h: rays a box blocks) and the keypoint
+// evidence `obb.blocks` (extract_blocks.h) and `obb.hides` (extract_hides.h) count such
+// crossings. Header-only: the likelihood calls it once per ray and box, and GCC inlines it there.
 #pragma once
 
 #include <algorithm>
@@ -44,6 +44,19 @@ inline bool segment_crosses(const Obb& box, const Eigen::Vector3d& o, const Eige
     if (enter > leave) return false;
   }
   return true;
+}
+
+// False only when no line of sight from `camera` to a point within `seen_radius` of `seen_centre`
+// can pass within `front_radius` of `front_centre`: the front sphere lies beyond all of them, or
+// outside the cone of those lines. A cheap test that skips the pairs nowhere near each other.
+inline bool sight_may_cross(const Eigen::Vector3d& camera, const Eigen::Vector3d& seen_centre, double seen_radius,
+                            const Eigen::Vector3d& front_centre, double front_radius) {
+  const Eigen::Vector3d to_seen = seen_centre - camera, to_front = front_centre - camera;
+  const double d_seen = to_seen.norm(), d_front = to_front.norm();
+  if (d_seen <= seen_radius || d_front <= front_radius) return true;  // the camera inside a sphere
+  if (d_front - front_radius > d_seen + seen_radius) return false;     // behind every point
+  const double cosine = std::clamp(to_seen.dot(to_front) / (d_seen * d_front), -1.0, 1.0);
+  return std::acos(cosine) <= std::asin(seen_radius / d_seen) + std::asin(front_radius / d_front);
 }
 
 }  // namespace ksmc::stdlib::tabletop

@@ -1,5 +1,7 @@
 // blocks: a box across the lines of sight of another object's keypoints
-// (extract_blocks.h, blocks::obb::blocks; the evidence of domains/tabletop.ksm's r28).
+// (extract_blocks.h, blocks::obb::blocks; the evidence of domains/tabletop.ksm's r28, r29);
+// hides: a box in front of the part of another estimate's surface that would show keypoints
+// (extract_hides.h, blocks::obb::hides; r30).
 #include <catch2/catch.hpp>
 
 #include <vector>
@@ -7,6 +9,7 @@
 #include "stdlib/tabletop/block_scene.h"
 #include "stdlib/tabletop/blocks.h"
 #include "stdlib/tabletop/extract_blocks.h"
+#include "stdlib/tabletop/extract_hides.h"
 #include "tests/tabletop/tabletop_test_util.h"
 
 using namespace ksmc::stdlib::tabletop;
@@ -90,4 +93,33 @@ TEST_CASE("blocks: the block reads the camera from the scene and the keypoints o
   CHECK_FALSE(blocks::obb::blocks(s, s.se3(1), s.vec3(1), s.se3(2), s.vec3(2), kMargin, 3, 0.1));  // no keypoints
   CHECK_FALSE(blocks::obb::blocks(s, s.se3(0), s.vec3(0), s.se3(1), s.vec3(1), kMargin, 3, 0.1));  // the table
   CHECK_FALSE(blocks::obb::blocks(s, s.se3(1), s.vec3(1), s.se3(1), s.vec3(1), kMargin, 3, 0.1));  // itself
+}
+
+TEST_CASE("hides: the share of the camera-facing surface behind a box's core", "[geometry]") {
+  // From kCamera (mid height, along -x) only the seen cube's -x face faces the camera.
+  const Obb seen = box_at({0.0, 0.0, 0.05}, {0.1, 0.1, 0.1});
+  CHECK(covered_share(box_at({-0.5, 0.0, 0.05}, {0.08, 0.3, 0.3}), seen, kCamera, kMargin) == Approx(1.0));
+  CHECK(covered_share(box_at({-0.5, 0.5, 0.05}, {0.08, 0.3, 0.3}), seen, kCamera, kMargin) == 0.0);
+  // A box covering y < 0 at x = -0.5: the lines of sight to the face (x = -0.05) cross its core
+  // (y <= -0.006) where y <= -0.0114 on the face: the first two of the six sample rows.
+  const Obb half = box_at({-0.5, -0.1, 0.05}, {0.08, 0.2, 0.3});
+  CHECK(covered_share(half, seen, kCamera, kMargin) == Approx(2.0 / 6.0));
+  // 25 keypoints on the other two thirds predict 12.5 on the covered third; 5 predict 2.5.
+  CHECK(extract_hides(half, seen, 25, kCamera, kMargin, 3.0));
+  CHECK_FALSE(extract_hides(half, seen, 5, kCamera, kMargin, 3.0));
+  CHECK_FALSE(extract_hides(half, seen, 0, kCamera, kMargin, 0.0));  // no keypoints: nothing to expect
+  // Thinner than twice the margin: it covers nothing.
+  CHECK(covered_share(box_at({-0.5, 0.0, 0.05}, {0.01, 0.3, 0.3}), seen, kCamera, kMargin) == 0.0);
+}
+
+TEST_CASE("hides: the block reads the camera from the scene and the keypoint count of the second body", "[geometry]") {
+  Scene input;
+  input.table_in_camera.t = -kCamera;
+  input.objects.push_back(seen_cube("seen", 0.0, 0.0, 25));
+  input.objects.push_back(object("front", Vector3d(-0.5, 0.0, 0.05), Vector3d(0.08, 0.3, 0.3)));
+  const blocks::Scene s(input);
+  CHECK(blocks::obb::hides(s, s.se3(2), s.vec3(2), s.se3(1), s.vec3(1), kMargin, 3.0));
+  CHECK_FALSE(blocks::obb::hides(s, s.se3(1), s.vec3(1), s.se3(2), s.vec3(2), kMargin, 0.0));  // no keypoints
+  CHECK_FALSE(blocks::obb::hides(s, s.se3(0), s.vec3(0), s.se3(1), s.vec3(1), kMargin, 3.0));  // the table
+  CHECK_FALSE(blocks::obb::hides(s, s.se3(1), s.vec3(1), s.se3(1), s.vec3(1), kMargin, 3.0));  // itself
 }

@@ -18,8 +18,8 @@ namespace gen = ksmc_generated::tabletop;
 // domains/tabletop.ksm (10 deg, 4 mm, 5 mm, 4 mm; robust Gaussian, 5 px; overlap 0.5 of the
 // smaller box, flatter by 0.5 deg; overhang within 4 mm, beyond 5 mm; leaning beyond 10 deg,
 // within 4 mm; snugger within 4 mm, by one sigma of gap noise; blocks by a 6 mm margin, 3
-// keypoints and a tenth of them; the pose estimate as a
-// measurement, 3 mm / 1.5 deg).
+// keypoints and a tenth of them; hides by a 6 mm margin, 3 keypoints expected; the pose
+// estimate as a measurement, 3 mm / 1.5 deg).
 struct KsmValues {
   static constexpr double stable_tol = 0.17453292519943295;
   static constexpr double contact_eps = 0.004;
@@ -38,6 +38,8 @@ struct KsmValues {
   static constexpr double blocks_margin = 0.006;
   static constexpr int blocks_min_keypoints = 3;
   static constexpr double blocks_min_fraction = 0.1;
+  static constexpr double hides_margin = 0.006;
+  static constexpr double hides_min_expected = 3.0;
   static constexpr double estimate_sigma_t = 0.003;                   // 3 mm
   static constexpr double estimate_sigma_r = 0.026179938779914945;    // 1.5 deg
   static constexpr bool sigma_from_scene = true;
@@ -48,8 +50,8 @@ struct KsmValues {
 };
 
 // A literal reading of the seed: 3 deg, 4 mm, 4 mm, plain Gaussian (sigma 1 px). The seed has
-// no overlap / flatter / overhang / leaning / snugger / blocks evidence; the domain file's
-// values serve its rules r23-r26, r28 and r29.
+// no overlap / flatter / overhang / leaning / snugger / blocks / hides evidence; the domain
+// file's values serve its rules r23-r26 and r28-r30.
 struct SeedValues {
   static constexpr double stable_tol = 0.05235987755982988;
   static constexpr double contact_eps = 0.004;
@@ -68,6 +70,8 @@ struct SeedValues {
   static constexpr double blocks_margin = KsmValues::blocks_margin;
   static constexpr int blocks_min_keypoints = KsmValues::blocks_min_keypoints;
   static constexpr double blocks_min_fraction = KsmValues::blocks_min_fraction;
+  static constexpr double hides_margin = KsmValues::hides_margin;
+  static constexpr double hides_min_expected = KsmValues::hides_min_expected;
   static constexpr double estimate_sigma_t = KsmValues::estimate_sigma_t;  // not in the seed either
   static constexpr double estimate_sigma_r = KsmValues::estimate_sigma_r;
   static constexpr bool sigma_from_scene = false;  // the seed's fixed 1 px
@@ -118,6 +122,10 @@ struct Fixture {
     return blk::obb::blocks(s, s.se3(c[0]), s.vec3(c[0]), s.se3(c[1]), s.vec3(c[1]), V::blocks_margin,
                             V::blocks_min_keypoints, V::blocks_min_fraction);
   }
+  static bool hides(const blk::Scene& s, const std::int32_t* c) {
+    return blk::obb::hides(s, s.se3(c[0]), s.vec3(c[0]), s.se3(c[1]), s.vec3(c[1]), V::hides_margin,
+                           V::hides_min_expected);
+  }
   static bool table(const blk::Scene& s, const std::int32_t* c) { return blk::scene::is_table(s, c[0]); }
 
   static blk::Binding make(bool decisions = true) {
@@ -145,6 +153,8 @@ struct Fixture {
       b.extractors.push_back({p, &snugger, "extract snugger(a, b) = obb.snugger(a, b, ...)"});
     if (const std::int32_t p = predicate_named("blocks"); p >= 0)
       b.extractors.push_back({p, &blocks, "extract blocks(a, b) = obb.blocks(...)"});
+    if (const std::int32_t p = predicate_named("hides"); p >= 0)
+      b.extractors.push_back({p, &hides, "extract hides(a, b) = obb.hides(...)"});
     b.extractors.push_back({gen::kPred_table, &table, "extract table(o) = scene.is_table(o)"});
     b.priors.push_back(blk::mln());
     b.likelihood = blk::keypoints::gaussian(1.0, V::robust, V::outlier_px, V::estimate_sigma_t, V::estimate_sigma_r,

@@ -2,7 +2,7 @@
 // the Markov logic is re-run only when the evidence bits change, reject restores the state
 // exactly, the prior is the MAP world's log-weight of the evidence, the kit's likelihood is
 // eq. 4.4, the generated-style extractors compute the stdlib's relations, and the rules that
-// break ties between two estimates (r25, r26, r29) decide the pairs they were written for.
+// break ties between two estimates (r25, r26, r29, r30) decide the pairs they were written for.
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -107,6 +107,42 @@ std::shared_ptr<const tt::Scene> copy_in_front_scene() {
   return scene;
 }
 
+// The copy behind the box it copies: "real", a 10 cm cube at the origin with 25 keypoints on
+// its face towards the camera (-x), and "copy", shifted 3 cm away from the camera, whose front
+// face lies inside the real box, so its 25 keypoints lie on its top face only. The camera 1 m
+// away along -x and 0.5 m up sees both tops (table frame).
+std::shared_ptr<const tt::Scene> copy_behind_scene() {
+  auto scene = std::make_shared<tt::Scene>();
+  const Eigen::Vector3d camera(-1.0, 0.0, 0.5);
+  scene->table_in_camera.t = -camera;  // axes aligned: only the camera's position matters here
+  tt::SceneObject real = object("real", {0.0, 0.0, 0.05}, {0.1, 0.1, 0.1});
+  tt::SceneObject copy = object("copy", {0.03, 0.0, 0.05}, {0.1, 0.1, 0.1});
+  for (int i = 0; i < 25; ++i) {
+    const double u = -0.04 + 0.02 * (i % 5), v = -0.04 + 0.02 * (i / 5);
+    real.keypoints_model.emplace_back(-0.05, u, v);
+    copy.keypoints_model.emplace_back(u, v, 0.05);
+    real.keypoints_image.emplace_back(0.0, 0.0);
+    copy.keypoints_image.emplace_back(0.0, 0.0);
+  }
+  scene->objects.push_back(std::move(real));
+  scene->objects.push_back(std::move(copy));
+  return scene;
+}
+
+// "real" and "copy" are alike but for the line-of-sight evidence: both level on the table,
+// cutting each other, neither flatter nor snugger (r23, r26 silent). The rule under test decides
+// the copy false and the real box real.
+void check_copy_decided(const kit::TabletopModel& m, const std::string& ev) {
+  REQUIRE(holds(ev, "intersect(real,copy)"));
+  REQUIRE(holds(ev, "stable(real)"));
+  REQUIRE(holds(ev, "stable(copy)"));
+  for (const char* atom : {"flatter(real,copy)", "flatter(copy,real)", "snugger(real,copy)", "snugger(copy,real)"})
+    REQUIRE_FALSE(holds(ev, atom));
+  const auto p_false = false_probs(kit::result_of(m));
+  CHECK(p_false("copy") > 0.6);  // decided: false
+  CHECK(p_false("real") < 0.4);  // decided: real
+}
+
 }  // namespace
 
 TEST_CASE("the extractors compute the stdlib relations with the .ksm tolerances") {
@@ -201,18 +237,20 @@ TEST_CASE("r29: of two estimates on one line of sight, the one in front is the l
   INFO(ev);
   REQUIRE(holds(ev, "blocks(copy,real)"));
   REQUIRE_FALSE(holds(ev, "blocks(real,copy)"));
-  // The rest of the evidence is the same for the two: both level on the table, cutting each
-  // other, neither flatter nor snugger (r23, r26 silent), so r14 and r28 alone leave them alike.
-  REQUIRE(holds(ev, "intersect(real,copy)"));
-  REQUIRE(holds(ev, "stable(real)"));
-  REQUIRE(holds(ev, "stable(copy)"));
-  REQUIRE_FALSE(holds(ev, "flatter(real,copy)"));
-  REQUIRE_FALSE(holds(ev, "flatter(copy,real)"));
-  REQUIRE_FALSE(holds(ev, "snugger(real,copy)"));
-  REQUIRE_FALSE(holds(ev, "snugger(copy,real)"));
-  const auto p_false = false_probs(kit::result_of(m));
-  CHECK(p_false("copy") > 0.6);  // decided: false
-  CHECK(p_false("real") < 0.4);  // decided: real
+  // The rest of the evidence is the same for the two, so r14 and r28 alone leave them alike.
+  check_copy_decided(m, ev);
+}
+
+TEST_CASE("r30: of two estimates cutting each other, the one behind with nothing seen through the front one is false") {
+  const kit::TabletopModel m(copy_behind_scene(), ksm_binding());
+  const std::string ev = evidence_of(m);
+  INFO(ev);
+  REQUIRE(holds(ev, "hides(real,copy)"));
+  REQUIRE_FALSE(holds(ev, "blocks(real,copy)"));
+  // Nothing else orders the pair: neither lies across the other's keypoints (r28, r29 silent).
+  REQUIRE_FALSE(holds(ev, "hides(copy,real)"));
+  REQUIRE_FALSE(holds(ev, "blocks(copy,real)"));
+  check_copy_decided(m, ev);
 }
 
 TEST_CASE("incremental evidence equals a fresh full extraction along a random walk") {

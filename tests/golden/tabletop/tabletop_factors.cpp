@@ -26,6 +26,7 @@ constexpr double kW_falseest_4cf5 = 2.9444389791664394;  // prob 0.95
 constexpr double kW_falseest_8a20 = 1.0986122886681098;  // prob 0.75
 constexpr double kW_falseest_6f09 = 2.1972245773362196;  // prob 0.9
 constexpr double kW_falseest_71e7 = 1.0986122886681098;  // prob 0.75
+constexpr double kW_falseest_ff24 = 1.0986122886681098;  // prob 0.75
 
 }  // namespace
 
@@ -49,6 +50,7 @@ const mln::Program& program() {
     p.add_predicate({"leaning", {kType_object}, false, false, -1});
     p.add_predicate({"snugger", {kType_object, kType_object}, false, false, -1});
     p.add_predicate({"blocks", {kType_object, kType_object}, false, false, -1});
+    p.add_predicate({"hides", {kType_object, kType_object}, false, false, -1});
     // higher_95b7: hard !higher(o, o)
     p.add_clause({"higher_95b7",
                   {{"o", kType_object, false}},
@@ -193,6 +195,11 @@ const mln::Program& program() {
                   {{"a", kType_object, false}, {"b", kType_object, false}},
                   {{kPred_blocks, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_blocks, false, {mln::Term::var(1), mln::Term::var(0)}}, {kPred_falseEst, false, {mln::Term::var(0)}}},
                   kW_falseest_71e7, false, "blocks(a, b) ^ !blocks(b, a) => falseEst(a)", {"domains/tabletop.ksm", 0}});
+    // falseest_ff24: intersect(a, b) ^ hides(a, b) ^ !blocks(a, b) => falseEst(b)
+    p.add_clause({"falseest_ff24",
+                  {{"a", kType_object, false}, {"b", kType_object, false}},
+                  {{kPred_intersect, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_hides, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_blocks, false, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_falseEst, false, {mln::Term::var(1)}}},
+                  kW_falseest_ff24, false, "intersect(a, b) ^ hides(a, b) ^ !blocks(a, b) => falseEst(b)", {"domains/tabletop.ksm", 0}});
     return p;
   }();
   return p;
@@ -677,6 +684,30 @@ void ground_falseest_71e7(mln::FactorContext& g, std::int32_t clause) {
   }
 }
 
+// falseest_ff24: intersect(a, b) ^ hides(a, b) ^ !blocks(a, b) => falseEst(b)
+void ground_falseest_ff24(mln::FactorContext& g, std::int32_t clause) {
+  const std::int32_t n_object = g.size(kType_object);
+  for (std::int32_t v_a = 0; v_a < n_object; ++v_a) {
+    for (std::int32_t v_b = 0; v_b < n_object; ++v_b) {
+      if (!g.ev(kPred_intersect, std::int64_t{v_a} * n_object + v_b)) {  // !intersect(a, b)
+        g.satisfied(kW_falseest_ff24);
+        continue;
+      }
+      if (!g.ev(kPred_hides, std::int64_t{v_a} * n_object + v_b)) {  // !hides(a, b)
+        g.satisfied(kW_falseest_ff24);
+        continue;
+      }
+      if (g.ev(kPred_blocks, std::int64_t{v_a} * n_object + v_b)) {  // blocks(a, b)
+        g.satisfied(kW_falseest_ff24);
+        continue;
+      }
+      g.begin();
+      if (g.query(kPred_falseEst, v_b, false)) { g.satisfied(kW_falseest_ff24); continue; }  // falseEst(b)
+      g.soft(kW_falseest_ff24, clause);
+    }
+  }
+}
+
 }  // namespace
 
 mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) {
@@ -712,6 +743,7 @@ mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) 
   ground_falseest_8a20(g, clause++);
   ground_falseest_6f09(g, clause++);
   ground_falseest_71e7(g, clause++);
+  ground_falseest_ff24(g, clause++);
   mln::fold_forced_atoms(grounding);
   return grounding;
 }
