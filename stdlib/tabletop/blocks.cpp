@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "stdlib/tabletop/extract_blocks.h"
-#include "stdlib/tabletop/extract_hides.h"
 #include "stdlib/tabletop/extract_contact.h"
+#include "stdlib/tabletop/extract_hides.h"
 #include "stdlib/tabletop/extract_higher.h"
 #include "stdlib/tabletop/extract_intersect.h"
 #include "stdlib/tabletop/extract_overhang.h"
@@ -174,22 +174,32 @@ bool snugger(const Scene& s, std::int32_t a, std::int32_t b, double eps, double 
   return std::isfinite(gap_b) && gap_a + margin * s.gap_sigma() < gap_b;
 }
 
+namespace {
+
+// The object whose keypoints a line-of-sight atom reads: b's body's, at the pose b stands for;
+// null when b is not one object's (the table, a mixed pose and size) or a and b are one body,
+// or a is the table.
+const SceneObject* keypoint_object(const Scene& s, Se3 pose_a, Se3 pose_b, Vec3 size_b) {
+  if (pose_b.body < 1 || pose_b.body != size_b.body || pose_a.body == pose_b.body || s.is_table(pose_a.body)) return nullptr;
+  return &s.input().objects[static_cast<std::size_t>(pose_b.body - 1)];
+}
+
+Eigen::Vector3d camera_of(const Scene& s) { return s.input().table_in_camera.inverse().t; }
+
+}  // namespace
+
 bool blocks(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, double margin, int min_keypoints,
             double min_fraction) {
-  // b's keypoints are an object's: its body's, at the pose b stands for.
-  if (pose_b.body < 1 || pose_b.body != size_b.body || pose_a.body == pose_b.body || s.is_table(pose_a.body)) return false;
-  const SceneObject& seen = s.input().objects[static_cast<std::size_t>(pose_b.body - 1)];
-  const Eigen::Vector3d camera = s.input().table_in_camera.inverse().t;
-  return extract_blocks(box_of(s, pose_a, size_a), *pose_b.pose, seen.keypoints_model, camera, margin, min_keypoints,
-                        min_fraction);
+  const SceneObject* seen = keypoint_object(s, pose_a, pose_b, size_b);
+  return seen != nullptr && extract_blocks(box_of(s, pose_a, size_a), *pose_b.pose, seen->keypoints_model, camera_of(s),
+                                           margin, min_keypoints, min_fraction);
 }
 
 bool hides(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, double margin, double min_expected) {
-  if (pose_b.body < 1 || pose_b.body != size_b.body || pose_a.body == pose_b.body || s.is_table(pose_a.body)) return false;
-  const SceneObject& seen = s.input().objects[static_cast<std::size_t>(pose_b.body - 1)];
-  const Eigen::Vector3d camera = s.input().table_in_camera.inverse().t;
-  return extract_hides(box_of(s, pose_a, size_a), box_of(s, pose_b, size_b), static_cast<int>(seen.keypoints_model.size()),
-                       camera, margin, min_expected);
+  const SceneObject* seen = keypoint_object(s, pose_a, pose_b, size_b);
+  return seen != nullptr && extract_hides(box_of(s, pose_a, size_a), box_of(s, pose_b, size_b),
+                                          static_cast<int>(seen->keypoints_model.size()), camera_of(s), margin,
+                                          min_expected);
 }
 
 }  // namespace obb
