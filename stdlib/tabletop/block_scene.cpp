@@ -1,6 +1,7 @@
 #include "stdlib/tabletop/block_scene.h"
 
 #include "stdlib/tabletop/gap_noise.h"
+#include "stdlib/tabletop/tilt_noise.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -23,6 +24,8 @@ Scene::Scene(tabletop::Scene input) : input_(std::move(input)) {
   const GapNoise noise = gap_noise(input_, defaults.stable_tol_rad);
   vertical_tolerance_ = tabletop::vertical_tolerance(noise, 3.0, defaults.intersect_eps, defaults.vertical_contact_eps);
   gap_sigma_ = tabletop::vertical_tolerance(noise, 1.0, 0.0, vertical_tolerance_ / 3.0);
+  const TiltNoise tilts = tilt_noise(input_, defaults.stable_tol_rad);
+  if (tilts.tilts >= 3) tilt_sigma_ = tilts.sigma;
 }
 
 const KeypointFit& Scene::fit(std::int32_t c) const {

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -71,6 +72,9 @@ class Scene {
   // One standard deviation of the scene's resting gaps [m] (gap_noise.h), from the input
   // poses; a third of vertical_tolerance() when too few gaps were seen to judge.
   double gap_sigma() const noexcept { return gap_sigma_; }
+  // One standard deviation of the scene's resting tilts [rad] (tilt_noise.h), from the input
+  // poses; infinite when fewer than 3 objects rest on a face (too few to judge).
+  double tilt_sigma() const noexcept { return tilt_sigma_; }
 
   // Moves object body c (c >= 1). One move at a time: commit() keeps it, undo() restores the
   // previous pose and geometry.
@@ -108,6 +112,7 @@ class Scene {
   mutable std::vector<std::optional<KeypointFit>> fits_;  // per body, on first use
   double vertical_tolerance_ = 0.0;
   double gap_sigma_ = 0.0;
+  double tilt_sigma_ = std::numeric_limits<double>::infinity();
   mutable std::vector<Obb> boxes_;
   mutable std::vector<char> box_valid_;
   mutable std::vector<PairSlot> pairs_;  // [min][max], n x n

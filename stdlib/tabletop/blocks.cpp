@@ -86,6 +86,10 @@ bool stable(const Scene& s, Se3 pose, Vec3 size, double tol) {
   return tilt_angle(box_of(s, pose, size)) <= tol;
 }
 
+bool tilted(const Scene& s, Se3 pose, Vec3 size, double k, double min_angle) {
+  return tilt_angle(box_of(s, pose, size)) > std::max(k * s.tilt_sigma(), min_angle);
+}
+
 bool contact(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, double eps) {
   const EvidenceParams p = contact_params(s, eps);
   EvidenceParams& rec = s.relation_params_mut();

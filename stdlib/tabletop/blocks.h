@@ -85,6 +85,10 @@ using Output = Decisions;
 namespace obb {
 // The box's up axis within `tol` [rad] of the table normal (extract_stable.h).
 bool stable(const Scene& s, Se3 pose, Vec3 size, double tol);
+// The box's up axis more than k standard deviations of the scene's resting-tilt noise
+// (Scene::tilt_sigma, tilt_noise.h) and more than min_angle [rad] from the table normal: it
+// does not rest on a level face. Never holds in a scene with fewer than 3 objects resting on a face.
+bool tilted(const Scene& s, Se3 pose, Vec3 size, double k, double min_angle);
 // Touching without intersecting: gap at most eps [m] (extract_contact.h).
 bool contact(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, double eps);
 // Penetration deeper than eps [m], or containment (extract_intersect.h).

@@ -1,6 +1,6 @@
 // The table-top knowledge base of domains/tabletop.ksm built as a runtime Program by hand:
 // the seed's Table 4.3 (DESIGN.md section 3, r1..r16) plus the domain file's additions
-// r17..r26 and r28..r30 (docs/tabletop_kit.md, "Knowledge base"). 29 rules; r10's conjunctive
+// r17..r26 and r28..r31 (docs/tabletop_kit.md, "Knowledge base"). 30 rules; r10's conjunctive
 // consequent becomes two clauses (r10a, r10b).
 // Soft weights are log-odds: prob p -> log(p / (1 - p)).
 #pragma once
@@ -18,7 +18,7 @@ struct TabletopKb {
   std::int32_t object = 0;
   std::int32_t stable = 0, table = 0, hover = 0, contact = 0, intersect = 0, higher = 0;
   std::int32_t supported = 0, supportive = 0, hidden = 0, false_est = 0;
-  std::int32_t overlap = 0, flatter = 0, overhang = 0, leaning = 0, snugger = 0, blocks = 0, hides = 0;
+  std::int32_t overlap = 0, flatter = 0, overhang = 0, leaning = 0, snugger = 0, blocks = 0, hides = 0, tilted = 0;
 
   TabletopKb() {
     using namespace runtime::mln;
@@ -47,6 +47,7 @@ struct TabletopKb {
     snugger = pred("snugger", 2, false);
     blocks = pred("blocks", 2, false);
     hides = pred("hides", 2, false);
+    tilted = pred("tilted", 1, false);
 
     // Literal shorthand: P(o) / !P(o) over variables 0 (o1) and 1 (o2).
     struct L {
@@ -98,7 +99,7 @@ struct TabletopKb {
          {{intersect, true, {0, 1}}, {false_est, false, {0}}, {false_est, false, {1}}});
     rule("r15", 24, 0.7, "supportive(o1) => !falseEst(o1)", 1, {{supportive, true, {0}}, {false_est, true, {0}}});
     rule("r16", 25, 0.9, "stable(o1) => !falseEst(o1)", 1, {{stable, true, {0}}, {false_est, true, {0}}});
-    // Additions of domains/tabletop.ksm (its lines 41-109).
+    // Additions of domains/tabletop.ksm (its lines 41-118).
     rule("r17", 41, 0.9, "!supported(o1)", 1, {{supported, true, {0}}});
     rule("r18", 46, 0.9, "stable(o1) ^ !table(o1) => supported(o1) v hidden(o1) v falseEst(o1)", 1,
          {{stable, true, {0}}, {table, false, {0}}, {supported, false, {0}}, {hidden, false, {0}},
@@ -124,6 +125,8 @@ struct TabletopKb {
          {{blocks, true, {0, 1}}, {blocks, false, {1, 0}}, {false_est, false, {0}}});
     rule("r30", 109, 0.75, "intersect(o1, o2) ^ hides(o1, o2) ^ !blocks(o1, o2) => falseEst(o2)", 2,
          {{intersect, true, {0, 1}}, {hides, true, {0, 1}}, {blocks, false, {0, 1}}, {false_est, false, {1}}});
+    rule("r31", 118, 0.99, "hover(o1) ^ tilted(o1) => falseEst(o1)", 1,
+         {{hover, true, {0}}, {tilted, true, {0}}, {false_est, false, {0}}});
   }
 };
 

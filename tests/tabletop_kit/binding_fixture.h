@@ -18,7 +18,8 @@ namespace gen = ksmc_generated::tabletop;
 // domains/tabletop.ksm (10 deg, 4 mm, 5 mm, 4 mm; robust Gaussian, 5 px; overlap 0.5 of the
 // smaller box, flatter by 0.5 deg; overhang within 4 mm, beyond 5 mm; leaning beyond 10 deg,
 // within 4 mm; snugger within 4 mm, by one sigma of gap noise; blocks by a 6 mm margin, 3
-// keypoints and a tenth of them; hides by a 6 mm margin, 3 keypoints expected; the pose
+// keypoints and a tenth of them; hides by a 6 mm margin, 3 keypoints expected; tilted beyond
+// 3 sigma of the scene's tilt noise and 2 deg; the pose
 // estimate as a measurement, 3 mm / 1.5 deg).
 struct KsmValues {
   static constexpr double stable_tol = 0.17453292519943295;
@@ -40,6 +41,8 @@ struct KsmValues {
   static constexpr double blocks_min_fraction = 0.1;
   static constexpr double hides_margin = 0.006;
   static constexpr double hides_min_expected = 3.0;
+  static constexpr double tilted_k = 3.0;
+  static constexpr double tilted_min = 0.03490658503988659;  // 2 deg
   static constexpr double estimate_sigma_t = 0.003;                   // 3 mm
   static constexpr double estimate_sigma_r = 0.026179938779914945;    // 1.5 deg
   static constexpr bool sigma_from_scene = true;
@@ -50,8 +53,8 @@ struct KsmValues {
 };
 
 // A literal reading of the seed: 3 deg, 4 mm, 4 mm, plain Gaussian (sigma 1 px). The seed has
-// no overlap / flatter / overhang / leaning / snugger / blocks / hides evidence; the domain
-// file's values serve its rules r23-r26 and r28-r30.
+// no overlap / flatter / overhang / leaning / snugger / blocks / hides / tilted evidence; the
+// domain file's values serve its rules r23-r26 and r28-r31.
 struct SeedValues {
   static constexpr double stable_tol = 0.05235987755982988;
   static constexpr double contact_eps = 0.004;
@@ -72,6 +75,8 @@ struct SeedValues {
   static constexpr double blocks_min_fraction = KsmValues::blocks_min_fraction;
   static constexpr double hides_margin = KsmValues::hides_margin;
   static constexpr double hides_min_expected = KsmValues::hides_min_expected;
+  static constexpr double tilted_k = KsmValues::tilted_k;
+  static constexpr double tilted_min = KsmValues::tilted_min;
   static constexpr double estimate_sigma_t = KsmValues::estimate_sigma_t;  // not in the seed either
   static constexpr double estimate_sigma_r = KsmValues::estimate_sigma_r;
   static constexpr bool sigma_from_scene = false;  // the seed's fixed 1 px
@@ -126,6 +131,9 @@ struct Fixture {
     return blk::obb::hides(s, s.se3(c[0]), s.vec3(c[0]), s.se3(c[1]), s.vec3(c[1]), V::hides_margin,
                            V::hides_min_expected);
   }
+  static bool tilted(const blk::Scene& s, const std::int32_t* c) {
+    return blk::obb::tilted(s, s.se3(c[0]), s.vec3(c[0]), V::tilted_k, V::tilted_min);
+  }
   static bool table(const blk::Scene& s, const std::int32_t* c) { return blk::scene::is_table(s, c[0]); }
 
   static blk::Binding make(bool decisions = true) {
@@ -155,6 +163,8 @@ struct Fixture {
       b.extractors.push_back({p, &blocks, "extract blocks(a, b) = obb.blocks(...)"});
     if (const std::int32_t p = predicate_named("hides"); p >= 0)
       b.extractors.push_back({p, &hides, "extract hides(a, b) = obb.hides(...)"});
+    if (const std::int32_t p = predicate_named("tilted"); p >= 0)
+      b.extractors.push_back({p, &tilted, "extract tilted(o) = obb.tilted(...)"});
     b.extractors.push_back({gen::kPred_table, &table, "extract table(o) = scene.is_table(o)"});
     b.priors.push_back(blk::mln());
     b.likelihood = blk::keypoints::gaussian(1.0, V::robust, V::outlier_px, V::estimate_sigma_t, V::estimate_sigma_r,

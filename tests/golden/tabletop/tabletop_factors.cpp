@@ -27,6 +27,7 @@ constexpr double kW_falseest_8a20 = 1.0986122886681098;  // prob 0.75
 constexpr double kW_falseest_6f09 = 2.1972245773362196;  // prob 0.9
 constexpr double kW_falseest_71e7 = 1.0986122886681098;  // prob 0.75
 constexpr double kW_falseest_ff24 = 1.0986122886681098;  // prob 0.75
+constexpr double kW_falseest_679c = 4.595119850134589;  // prob 0.99
 
 }  // namespace
 
@@ -51,6 +52,7 @@ const mln::Program& program() {
     p.add_predicate({"snugger", {kType_object, kType_object}, false, false, -1});
     p.add_predicate({"blocks", {kType_object, kType_object}, false, false, -1});
     p.add_predicate({"hides", {kType_object, kType_object}, false, false, -1});
+    p.add_predicate({"tilted", {kType_object}, false, false, -1});
     // higher_95b7: hard !higher(o, o)
     p.add_clause({"higher_95b7",
                   {{"o", kType_object, false}},
@@ -200,6 +202,11 @@ const mln::Program& program() {
                   {{"a", kType_object, false}, {"b", kType_object, false}},
                   {{kPred_intersect, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_hides, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_blocks, false, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_falseEst, false, {mln::Term::var(1)}}},
                   kW_falseest_ff24, false, "intersect(a, b) ^ hides(a, b) ^ !blocks(a, b) => falseEst(b)", {"domains/tabletop.ksm", 0}});
+    // falseest_679c: hover(o) ^ tilted(o) => falseEst(o)
+    p.add_clause({"falseest_679c",
+                  {{"o", kType_object, false}},
+                  {{kPred_hover, true, {mln::Term::var(0)}}, {kPred_tilted, true, {mln::Term::var(0)}}, {kPred_falseEst, false, {mln::Term::var(0)}}},
+                  kW_falseest_679c, false, "hover(o) ^ tilted(o) => falseEst(o)", {"domains/tabletop.ksm", 0}});
     return p;
   }();
   return p;
@@ -708,6 +715,24 @@ void ground_falseest_ff24(mln::FactorContext& g, std::int32_t clause) {
   }
 }
 
+// falseest_679c: hover(o) ^ tilted(o) => falseEst(o)
+void ground_falseest_679c(mln::FactorContext& g, std::int32_t clause) {
+  const std::int32_t n_object = g.size(kType_object);
+  for (std::int32_t v_o = 0; v_o < n_object; ++v_o) {
+    if (!g.ev(kPred_hover, v_o)) {  // !hover(o)
+      g.satisfied(kW_falseest_679c);
+      continue;
+    }
+    if (!g.ev(kPred_tilted, v_o)) {  // !tilted(o)
+      g.satisfied(kW_falseest_679c);
+      continue;
+    }
+    g.begin();
+    if (g.query(kPred_falseEst, v_o, false)) { g.satisfied(kW_falseest_679c); continue; }  // falseEst(o)
+    g.soft(kW_falseest_679c, clause);
+  }
+}
+
 }  // namespace
 
 mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) {
@@ -744,6 +769,7 @@ mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) 
   ground_falseest_6f09(g, clause++);
   ground_falseest_71e7(g, clause++);
   ground_falseest_ff24(g, clause++);
+  ground_falseest_679c(g, clause++);
   mln::fold_forced_atoms(grounding);
   return grounding;
 }

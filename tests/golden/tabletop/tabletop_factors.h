@@ -31,6 +31,7 @@ enum Pred : std::int32_t {
   kPred_snugger = 14,  // evidence snugger(object, object)
   kPred_blocks = 15,  // evidence blocks(object, object)
   kPred_hides = 16,  // evidence hides(object, object)
+  kPred_tilted = 17,  // evidence tilted(object)
 };
 
 // The clause program this file was generated from: names, weights, source locations.

@@ -63,6 +63,10 @@ bool extract_blocks(const Scene& s, const std::int32_t* c) {
 bool extract_hides(const Scene& s, const std::int32_t* c) {
   return blk::obb::hides(s, s.se3(c[0]), s.vec3(c[0]), s.se3(c[1]), s.vec3(c[1]), 0.006, 3.0);
 }
+// extract tilted(o) = obb.tilted(pose[o], size[o], k = 3, min = 2 deg);
+bool extract_tilted(const Scene& s, const std::int32_t* c) {
+  return blk::obb::tilted(s, s.se3(c[0]), s.vec3(c[0]), 3.0, 0.03490658503988659);
+}
 // extract table(o) = scene.is_table(o);
 bool extract_table(const Scene& s, const std::int32_t* c) {
   return blk::scene::is_table(s, c[0]);
@@ -86,6 +90,7 @@ blk::Binding make_binding() {
   b.extractors.push_back({kPred_snugger, &extract_snugger, "extract snugger(a, b) = obb.snugger(a, b, eps = 4 mm, margin = 1);"});
   b.extractors.push_back({kPred_blocks, &extract_blocks, "extract blocks(a, b) = obb.blocks(pose[a], size[a], pose[b], size[b], margin = 6 mm, min_keypoints = 3, min_fraction = 0.1);"});
   b.extractors.push_back({kPred_hides, &extract_hides, "extract hides(a, b) = obb.hides(pose[a], size[a], pose[b], size[b], margin = 6 mm, min_expected = 3);"});
+  b.extractors.push_back({kPred_tilted, &extract_tilted, "extract tilted(o) = obb.tilted(pose[o], size[o], k = 3, min = 2 deg);"});
   b.extractors.push_back({kPred_table, &extract_table, "extract table(o) = scene.is_table(o);"});
   b.priors.push_back(blk::mln());
   b.likelihood = blk::keypoints::gaussian(1.0, true, 5.0, 0.003, 0.026179938779914945, true);
