@@ -1,6 +1,6 @@
 // The table-top knowledge base of domains/tabletop.ksm built as a runtime Program by hand:
 // the seed's Table 4.3 (DESIGN.md section 3, r1..r16) plus the domain file's additions
-// r17..r26 and r28..r31 (docs/tabletop_kit.md, "Knowledge base"). 30 rules; r10's conjunctive
+// r17..r26 and r28..r32 (docs/tabletop_kit.md, "Knowledge base"). 31 rules; r10's conjunctive
 // consequent becomes two clauses (r10a, r10b).
 // Soft weights are log-odds: prob p -> log(p / (1 - p)).
 #pragma once
@@ -99,7 +99,7 @@ struct TabletopKb {
          {{intersect, true, {0, 1}}, {false_est, false, {0}}, {false_est, false, {1}}});
     rule("r15", 24, 0.7, "supportive(o1) => !falseEst(o1)", 1, {{supportive, true, {0}}, {false_est, true, {0}}});
     rule("r16", 25, 0.9, "stable(o1) => !falseEst(o1)", 1, {{stable, true, {0}}, {false_est, true, {0}}});
-    // Additions of domains/tabletop.ksm (its lines 41-118).
+    // Additions of domains/tabletop.ksm (its lines 41-125).
     rule("r17", 41, 0.9, "!supported(o1)", 1, {{supported, true, {0}}});
     rule("r18", 46, 0.9, "stable(o1) ^ !table(o1) => supported(o1) v hidden(o1) v falseEst(o1)", 1,
          {{stable, true, {0}}, {table, false, {0}}, {supported, false, {0}}, {hidden, false, {0}},
@@ -127,6 +127,7 @@ struct TabletopKb {
          {{intersect, true, {0, 1}}, {hides, true, {0, 1}}, {blocks, false, {0, 1}}, {false_est, false, {1}}});
     rule("r31", 118, 0.99, "hover(o1) ^ tilted(o1) => falseEst(o1)", 1,
          {{hover, true, {0}}, {tilted, true, {0}}, {false_est, false, {0}}});
+    rule("r32", 125, 0.9, "!hover(o1)", 1, {{hover, true, {0}}});
   }
 };
 

@@ -28,6 +28,7 @@ constexpr double kW_falseest_6f09 = 2.1972245773362196;  // prob 0.9
 constexpr double kW_falseest_71e7 = 1.0986122886681098;  // prob 0.75
 constexpr double kW_falseest_ff24 = 1.0986122886681098;  // prob 0.75
 constexpr double kW_falseest_679c = 4.595119850134589;  // prob 0.99
+constexpr double kW_hover_164b = 2.1972245773362196;  // prob 0.9
 
 }  // namespace
 
@@ -207,6 +208,11 @@ const mln::Program& program() {
                   {{"o", kType_object, false}},
                   {{kPred_hover, true, {mln::Term::var(0)}}, {kPred_tilted, true, {mln::Term::var(0)}}, {kPred_falseEst, false, {mln::Term::var(0)}}},
                   kW_falseest_679c, false, "hover(o) ^ tilted(o) => falseEst(o)", {"domains/tabletop.ksm", 0}});
+    // hover_164b: !hover(o)
+    p.add_clause({"hover_164b",
+                  {{"o", kType_object, false}},
+                  {{kPred_hover, true, {mln::Term::var(0)}}},
+                  kW_hover_164b, false, "!hover(o)", {"domains/tabletop.ksm", 0}});
     return p;
   }();
   return p;
@@ -733,6 +739,19 @@ void ground_falseest_679c(mln::FactorContext& g, std::int32_t clause) {
   }
 }
 
+// hover_164b: !hover(o)
+void ground_hover_164b(mln::FactorContext& g, std::int32_t clause) {
+  const std::int32_t n_object = g.size(kType_object);
+  for (std::int32_t v_o = 0; v_o < n_object; ++v_o) {
+    if (!g.ev(kPred_hover, v_o)) {  // !hover(o)
+      g.satisfied(kW_hover_164b);
+      continue;
+    }
+    g.begin();
+    g.soft(kW_hover_164b, clause);
+  }
+}
+
 }  // namespace
 
 mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) {
@@ -770,6 +789,7 @@ mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) 
   ground_falseest_71e7(g, clause++);
   ground_falseest_ff24(g, clause++);
   ground_falseest_679c(g, clause++);
+  ground_hover_164b(g, clause++);
   mln::fold_forced_atoms(grounding);
   return grounding;
 }
