@@ -161,10 +161,16 @@ bool leaning(const Scene& s, std::int32_t o, double tol, double eps) {
   for (std::size_t j = 0; j < s.bodies(); ++j) {
     const auto b = static_cast<std::int32_t>(j);
     if (b == o || !touching(s, o, b, eps)) continue;
-    if (intersect_from_geometry(s.pair(o, b, kDefaults.max_contact_eps()), cut)) continue;  // cut into, not held
+    // A surface under it is not cut into. The body it leans on may be, as deep as the scene's
+    // pose noise reaches (Scene::vertical_tolerance): a leaning box's estimate cuts into what
+    // it leans on as often as it stops short of it.
+    const PairGeometry& g = s.pair(o, b, kDefaults.max_contact_eps());
+    const bool cut_into = intersect_from_geometry(g, cut);
+    const bool within_noise = !g.contained && g.depth <= s.vertical_tolerance();
     const Obb& other = s.box(b);
-    const bool under = s.is_table(b) || (tilt_angle(other) <= tol && extract_higher(box, other, kDefaults));
-    const bool falling_side = !s.is_table(b) && (other.closest_point(box.center) - box.center).head<2>().dot(falls) > 0.0;
+    const bool under = !cut_into && (s.is_table(b) || (tilt_angle(other) <= tol && extract_higher(box, other, kDefaults)));
+    const bool falling_side = (!cut_into || within_noise) && !s.is_table(b) &&
+                              (other.closest_point(box.center) - box.center).head<2>().dot(falls) > 0.0;
     if (under) base = b, ++bases;
     if (falling_side) held = b, ++helds;
   }

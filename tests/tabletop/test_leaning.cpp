@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <string>
 
 #include "stdlib/tabletop/block_scene.h"
 #include "stdlib/tabletop/blocks.h"
@@ -63,6 +64,30 @@ TEST_CASE("leaning: not without the body it leans on, nor when cutting into it",
   Scene cut;
   cut.objects = {wall(), board(20.0, 0.02)};  // 2 cm into the wall
   CHECK_FALSE(leaning(cut, 2));
+}
+
+TEST_CASE("leaning: the body it leans on may be cut into within the scene's pose noise", "[geometry]") {
+  // A leaning box's estimate cuts into what it leans on as often as it stops short of it. With
+  // fewer than 3 resting gaps the scene's vertical tolerance is the stdlib's 15 mm: a board
+  // 1 cm into the wall leans; 2 cm into it (above) does not.
+  Scene noisy;
+  noisy.objects = {wall(), board(20.0, 0.01)};
+  REQUIRE(blocks::Scene(noisy).vertical_tolerance() == Approx(0.015));
+  CHECK(leaning(noisy, 2));
+
+  // Three cubes resting exactly on the table: no gap noise, the tolerance falls to the 5 mm
+  // intersect tolerance, and the same 1 cm cut is no lean.
+  Scene exact = noisy;
+  for (int i = 0; i < 3; ++i)
+    exact.objects.push_back(object("cube" + std::to_string(i), Vector3d(-0.5, 0.2 * i, 0.05), Vector3d(0.1, 0.1, 0.1)));
+  REQUIRE(blocks::Scene(exact).vertical_tolerance() == Approx(0.005));
+  CHECK_FALSE(leaning(exact, 2));
+  // The surface under it may not be cut into: the board 2 cm deep in the table.
+  Scene sunk;
+  SceneObject deep = board(20.0);
+  deep.pose.t.z() -= 0.02;
+  sunk.objects = {wall(), deep};
+  CHECK_FALSE(leaning(sunk, 2));
 }
 
 TEST_CASE("leaning: the body it touches must be on the side it would fall to", "[geometry]") {
