@@ -28,9 +28,13 @@ struct Draft {
 // Steps 1-3: layout, Bullet settling, true relations.
 // The box count is drawn once per scene, so redraws (more frequent for crowded tables) do not
 // bias the generated counts towards small scenes.
+// Draws past max_attempts (a second round, after the first failed) widen the drop region by
+// half: a box count drawn too large for the usual region (24 boxes: placement, settling and
+// the camera's view fail there) still yields a scene, and every scene found in the first
+// round is as it was.
 std::optional<Draft> simulate(std::uint64_t seed, int attempt, int n, const GeneratorOptions& o, std::string& why) {
   Rng rng(stage_seed(seed, attempt, kLayout));
-  auto layout = draw_layout(rng, n, o.table, o.layout);
+  auto layout = draw_layout(rng, n, o.table, o.layout, attempt < o.max_attempts ? 1.0 : 1.5);
   if (!layout) {
     why = fmt::format("could not place {} boxes without overlap", n);
     return std::nullopt;
@@ -271,7 +275,7 @@ GeneratedScene generate_scene(std::uint64_t seed, const GeneratorOptions& o) {
   scene.camera = o.camera;
   Rng count_rng(stage_seed(seed, 0, kCount));
   const int n = count_rng.uniform_int(o.min_objects, o.max_objects);
-  for (int attempt = 0; attempt < o.max_attempts; ++attempt) {
+  for (int attempt = 0; attempt < 2 * o.max_attempts; ++attempt) {
     std::string why;
     auto draft = simulate(seed, attempt, n, o, why);
     if (!draft) {
@@ -333,9 +337,17 @@ GeneratedScene generate_scene(std::uint64_t seed, const GeneratorOptions& o) {
     scene.attempts = attempt + 1;
     return scene;
   }
-  std::string last = scene.redraws.empty() ? std::string("none") : scene.redraws.back();
-  throw std::runtime_error(fmt::format("scene seed {}: no valid scene after {} draws (last: {})", seed,
-                                       o.max_attempts, last));
+  // Each reason with how many draws it ended, in order of first occurrence.
+  std::vector<std::pair<std::string, int>> reasons;
+  for (const auto& why : scene.redraws) {
+    auto it = std::find_if(reasons.begin(), reasons.end(), [&](const auto& r) { return r.first == why; });
+    if (it == reasons.end()) reasons.emplace_back(why, 1);
+    else ++it->second;
+  }
+  std::string summary;
+  for (const auto& [why, count] : reasons) summary += fmt::format("{}{} x {}", summary.empty() ? "" : "; ", count, why);
+  throw std::runtime_error(fmt::format("scene seed {}: no valid scene after {} draws ({})", seed, 2 * o.max_attempts,
+                                       summary.empty() ? std::string("none") : summary));
 }
 
 }  // namespace ksmc::tools::tabletop_sim

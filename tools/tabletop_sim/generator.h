@@ -70,7 +70,8 @@ struct GeneratedScene {
   std::size_t false_count() const;
 };
 
-// Deterministic in (seed, options). Throws std::runtime_error after max_attempts redraws.
+// Deterministic in (seed, options). Throws std::runtime_error, naming each reason with its
+// count, after 2 x max_attempts redraws (the second round in a drop region half as wide again).
 GeneratedScene generate_scene(std::uint64_t seed, const GeneratorOptions& options);
 
 // Seed of scene `index` in a batch started with `seed`.

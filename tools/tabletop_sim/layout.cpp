@@ -152,15 +152,16 @@ bool place_beside(Rng& rng, const BoxItem& item, const Box& base, const Box& upp
 
 }  // namespace
 
-Eigen::Vector2d drop_region(int n, const TableSpec& table) {
-  const double hx = std::min({0.16 + 0.01 * n, 0.34, table.half_extent.x() - 0.08});
-  const double hy = std::min({0.12 + 0.007 * n, 0.25, table.half_extent.y() - 0.08});
+Eigen::Vector2d drop_region(int n, const TableSpec& table, double spread) {
+  const double hx = std::min({spread * (0.16 + 0.01 * n), spread * 0.34, table.half_extent.x() - 0.08});
+  const double hy = std::min({spread * (0.12 + 0.007 * n), spread * 0.25, table.half_extent.y() - 0.08});
   return {hx, hy};
 }
 
-std::optional<Layout> draw_layout(Rng& rng, int n, const TableSpec& table, const LayoutParams& params) {
+std::optional<Layout> draw_layout(Rng& rng, int n, const TableSpec& table, const LayoutParams& params,
+                                  double spread) {
   Layout layout;
-  layout.region_half = drop_region(n, table);
+  layout.region_half = drop_region(n, table, spread);
   std::vector<Footprint> placed;                 // one per stacked body (leaners excluded)
   std::vector<int> column_of;                    // column of each entry of `placed`
   std::vector<std::size_t> column_bases;         // index into bodies of each column's bottom box

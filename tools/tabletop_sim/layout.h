@@ -27,11 +27,13 @@ struct Layout {
   Eigen::Vector2d region_half;   // half extents of the drop region
 };
 
-// Horizontal region used for `n` boxes (grows with n, stays inside the table).
-Eigen::Vector2d drop_region(int n, const TableSpec& table);
+// Horizontal region used for `n` boxes (grows with n, stays inside the table). `spread` >= 1
+// widens it for a table too crowded for the usual region (it still stays inside the table).
+Eigen::Vector2d drop_region(int n, const TableSpec& table, double spread = 1.0);
 
-// Draws `n` boxes and places them. Returns nullopt when the boxes could not be placed
-// without overlap (the caller redraws).
-std::optional<Layout> draw_layout(Rng& rng, int n, const TableSpec& table, const LayoutParams& params);
+// Draws `n` boxes and places them in drop_region(n, table, spread). Returns nullopt when the
+// boxes could not be placed without overlap (the caller redraws).
+std::optional<Layout> draw_layout(Rng& rng, int n, const TableSpec& table, const LayoutParams& params,
+                                  double spread = 1.0);
 
 }  // namespace ksmc::tools::tabletop_sim
