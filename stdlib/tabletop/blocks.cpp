@@ -162,8 +162,8 @@ bool leaning(const Scene& s, std::int32_t o, double tol, double eps) {
     const auto b = static_cast<std::int32_t>(j);
     if (b == o || !touching(s, o, b, eps)) continue;
     // A surface under it is not cut into. The body it leans on may be, as deep as the scene's
-    // pose noise reaches (Scene::vertical_tolerance): a leaning box's estimate cuts into what
-    // it leans on as often as it stops short of it.
+    // pose noise reaches (Scene::vertical_tolerance): pose noise puts a leaning box's estimate
+    // on either side of the face it leans on.
     const PairGeometry& g = s.pair(o, b, kDefaults.max_contact_eps());
     const bool cut_into = intersect_from_geometry(g, cut);
     const bool within_noise = !g.contained && g.depth <= s.vertical_tolerance();

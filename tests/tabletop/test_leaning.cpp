@@ -67,7 +67,7 @@ TEST_CASE("leaning: not without the body it leans on, nor when cutting into it",
 }
 
 TEST_CASE("leaning: the body it leans on may be cut into within the scene's pose noise", "[geometry]") {
-  // A leaning box's estimate cuts into what it leans on as often as it stops short of it. With
+  // Pose noise puts a leaning box's estimate on either side of the face it leans on. With
   // fewer than 3 resting gaps the scene's vertical tolerance is the stdlib's 15 mm: a board
   // 1 cm into the wall leans; 2 cm into it (above) does not.
   Scene noisy;
