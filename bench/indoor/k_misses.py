@@ -42,7 +42,8 @@ def shrunk(corners, t):
     return [ctr + s1 * a * (l1 / 2 - t) + s2 * b * (l2 / 2 - t) for s1, s2 in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
 
 
-def predict(world, h, w):
+def predict(world, h, w, band=1.0):
+    """Predicted classes and the units' union; `band`: wall band width inside each unit, cells."""
     yy, xx = np.mgrid[0:h, 0:w]
     pts = np.stack([xx.ravel() + 0.5, yy.ravel() + 0.5], 1)
     area = np.zeros(h * w, bool)
@@ -50,7 +51,7 @@ def predict(world, h, w):
     door = np.zeros(h * w, bool)
     for u in world["units"]:
         outer = Path(u["corners"]).contains_points(pts)
-        inner = Path(shrunk(u["corners"], 1.0)).contains_points(pts)
+        inner = Path(shrunk(u["corners"], band)).contains_points(pts)
         area |= outer
         wall |= outer & ~inner
     for d in world["doors"]:
