@@ -22,16 +22,9 @@ inline Eigen::Vector3d in_box_axes(const Obb& box, const Eigen::Vector3d& v) {
   return {box.axes.col(0).dot(v), box.axes.col(1).dot(v), box.axes.col(2).dot(v)};
 }
 
-// Whether the segment sensor -> p, stopping `margin` before p, passes through the box; `o` is
-// the sensor in the box frame (in_box_axes(box, sensor - box.center)).
-inline bool segment_crosses(const Obb& box, const Eigen::Vector3d& o, const Eigen::Vector3d& sensor,
-                            const Eigen::Vector3d& p, double margin) {
-  const Eigen::Vector3d seg = p - sensor;
-  const double len = seg.norm();
-  if (len <= margin) return false;
-  const double reach = 1.0 - margin / len;  // segment parameter where the check stops
-  const Eigen::Vector3d d = in_box_axes(box, seg);
-  double enter = 0.0, leave = reach;
+// Narrows [enter, leave] (parameters of the line o + t d, box frame) to where the line is
+// inside the box; false when nothing is left (the slab test).
+inline bool slab_span(const Obb& box, const Eigen::Vector3d& o, const Eigen::Vector3d& d, double& enter, double& leave) {
   for (int k = 0; k < 3; ++k) {
     if (std::abs(d[k]) < 1e-15) {
       if (std::abs(o[k]) > box.half[k]) return false;
@@ -44,6 +37,17 @@ inline bool segment_crosses(const Obb& box, const Eigen::Vector3d& o, const Eige
     if (enter > leave) return false;
   }
   return true;
+}
+
+// Whether the segment sensor -> p, stopping `margin` before p, passes through the box; `o` is
+// the sensor in the box frame (in_box_axes(box, sensor - box.center)).
+inline bool segment_crosses(const Obb& box, const Eigen::Vector3d& o, const Eigen::Vector3d& sensor,
+                            const Eigen::Vector3d& p, double margin) {
+  const Eigen::Vector3d seg = p - sensor;
+  const double len = seg.norm();
+  if (len <= margin) return false;
+  double enter = 0.0, leave = 1.0 - margin / len;  // segment parameter where the check stops
+  return slab_span(box, o, in_box_axes(box, seg), enter, leave);
 }
 
 // False only when no line of sight from `camera` to a point within `seen_radius` of `seen_centre`

@@ -1,6 +1,6 @@
 // ksmc-perception-sim [--scenes N] [--objects A..B] [--seed S] [--sigma M] [--missing R] [--stride K] [--upright]
 //                     [--footprint-only] [--fixed-tolerance] [--isotropic] [--no-shadow-merge] [--whole-faces]
-//                     [--no-side-steps] [--visible V] [--verbose] [--dump DIR]
+//                     [--no-side-steps] [--no-hidden-bottom] [--visible V] [--verbose] [--dump DIR]
 // Renders depth clouds of generated scenes (three families), runs the point-cloud front end
 // and prints, per family, how well the boxes are recovered (camera frame, nearest-centre
 // matching within 5 cm). "in tol" is over all boxes; "vis>=V" repeats it over the boxes
@@ -85,6 +85,7 @@ int main(int argc, char** argv) {
   bool whole_faces = false;  // tilted boxes from whole faces, a neighbour's face near by taken in: the figures before
                              // the edge and filled-rows tests (tilted_box.h)
   bool no_side_steps = false;  // boxes not split where their side faces step: the figures before side_steps.h
+  bool no_hidden_bottom = false;  // boxes starting above the table stay there: the figures before hidden_bottom.h
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
@@ -97,6 +98,7 @@ int main(int argc, char** argv) {
                          : a == "--no-shadow-merge" ? &no_shadow_merge
                          : a == "--whole-faces"     ? &whole_faces
                          : a == "--no-side-steps"   ? &no_side_steps
+                         : a == "--no-hidden-bottom" ? &no_hidden_bottom
                                                     : nullptr;
       if (flag != nullptr) {
         *flag = true;
@@ -154,6 +156,7 @@ int main(int argc, char** argv) {
         if (isotropic) opt.clusters.slant_factor = 0.0;
         if (no_shadow_merge) opt.shadow.enabled = false;
         if (no_side_steps) opt.fit.stacks.sides.enabled = false;
+        if (no_hidden_bottom) opt.hidden_bottom.enabled = false;
         if (whole_faces) {
           opt.fit.tilt.edge_gap = std::numeric_limits<double>::infinity();
           opt.fit.tilt.fill_ratio = 0.0;

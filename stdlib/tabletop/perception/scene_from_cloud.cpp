@@ -11,14 +11,17 @@ namespace ksmc::stdlib::tabletop::perception {
 
 namespace {
 
+// A point count set on a cloud `rho` times denser: it shrinks by rho^2 (at least 3).
+std::size_t fewer_points(std::size_t n, double rho) {
+  return std::max<std::size_t>(3, static_cast<std::size_t>(std::lround(static_cast<double>(n) / (rho * rho))));
+}
+
 // The box fits' sampling-dependent settings for a cloud `rho` times sparser than the one
 // they were set on (rho = derived / floor clustering tolerance, >= 1): neighbourhood radii
 // and cells grow by rho, point counts shrink by rho^2.
 ClusterBoxOptions for_sampling(ClusterBoxOptions fit, double rho) {
   if (rho <= 1.0) return fit;
-  const auto fewer = [rho](std::size_t n) {
-    return std::max<std::size_t>(3, static_cast<std::size_t>(std::lround(static_cast<double>(n) / (rho * rho))));
-  };
+  const auto fewer = [rho](std::size_t n) { return fewer_points(n, rho); };
   fit.tilt.faces.normal_radius *= rho;
   fit.tilt.faces.grow_radius *= rho;
   fit.tilt.faces.min_points = fewer(fit.tilt.faces.min_points);
@@ -79,23 +82,34 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
   FreeSpace seen;  // the stacks' free-space test: what the sensor saw through
   seen.points = out.cloud_in_table;
   seen.sensor = out.sensor_in_table;
+  std::vector<UprightBox> boxes;  // all clusters' boxes, then the hidden feet grown
+  std::vector<std::size_t> cluster_of, per_cluster(clusters.size(), 0);
   for (std::size_t c = 0; c < clusters.size(); ++c) {
-    const std::vector<UprightBox> boxes = fit_cluster_boxes(clusters[c], fit, &seen);
-    for (const UprightBox& box : boxes) {
-      SceneObject o;
-      o.id = options.id_prefix + std::to_string(s.objects.size());
-      o.model = "cluster";
-      o.size = box.size;
-      o.pose = box.pose;
-      // The box's own points: those of the cluster within 1 cm of it (stacked boxes split them).
-      const Obb obb = o.obb();
-      Points own;
-      for (const auto& p : clusters[c])
-        if (boxes.size() == 1 || obb.contains(p, 0.01)) own.push_back(p);
-      out.object_points.push_back(std::move(own));
-      out.cluster_of.push_back(static_cast<int>(c));
-      s.objects.push_back(std::move(o));
+    for (const UprightBox& box : fit_cluster_boxes(clusters[c], fit, &seen)) {
+      boxes.push_back(box);
+      cluster_of.push_back(c);
+      ++per_cluster[c];
     }
+  }
+  HiddenBottomOptions hidden = options.hidden_bottom;
+  if (options.clusters.tolerance > 0.0 && clusters_options.tolerance > options.clusters.tolerance)
+    hidden.min_rays = fewer_points(hidden.min_rays, clusters_options.tolerance / options.clusters.tolerance);
+  grow_hidden_bottoms(boxes, seen, fit.box.float_gap, hidden);
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    const std::size_t c = cluster_of[i];
+    SceneObject o;
+    o.id = options.id_prefix + std::to_string(s.objects.size());
+    o.model = "cluster";
+    o.size = boxes[i].size;
+    o.pose = boxes[i].pose;
+    // The box's own points: those of the cluster within 1 cm of it (stacked boxes split them).
+    const Obb obb = o.obb();
+    Points own;
+    for (const auto& p : clusters[c])
+      if (per_cluster[c] == 1 || obb.contains(p, 0.01)) own.push_back(p);
+    out.object_points.push_back(std::move(own));
+    out.cluster_of.push_back(static_cast<int>(c));
+    s.objects.push_back(std::move(o));
   }
   return out;
 }

@@ -1,0 +1,89 @@
+#include "stdlib/tabletop/perception/hidden_bottom.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "stdlib/tabletop/line_of_sight.h"
+
+namespace ksmc::stdlib::tabletop::perception {
+
+namespace {
+
+bool upright(const UprightBox& box) {
+  return std::abs((box.pose.q * Eigen::Vector3d::UnitZ()).z()) > 1.0 - 1e-9;
+}
+
+double bottom_of(const UprightBox& box) { return box.pose.t.z() - 0.5 * box.size.z(); }
+
+}  // namespace
+
+SpaceUnder rays_under(const UprightBox& box, const FreeSpace& seen, const HiddenBottomOptions& options) {
+  SpaceUnder out;
+  const double bottom = bottom_of(box);
+  const Eigen::Vector3d half(0.5 * box.size.x() - options.inset, 0.5 * box.size.y() - options.inset,
+                             0.5 * bottom - options.inset);
+  if (half.minCoeff() <= 0.0) return out;
+  Obb under;
+  under.center = Eigen::Vector3d(box.pose.t.x(), box.pose.t.y(), 0.5 * bottom);
+  under.axes = box.pose.q.toRotationMatrix();
+  under.half = half;
+  Obb own;  // the fitted box grown by the margin: its own points are not counted
+  own.center = box.pose.t;
+  own.axes = under.axes;
+  own.half = 0.5 * box.size + Eigen::Vector3d::Constant(options.margin);
+  const Eigen::Vector3d o = in_box_axes(under, seen.sensor - under.center);
+  for (const auto& p : seen.points) {
+    const Eigen::Vector3d seg = p - seen.sensor;
+    const double len = seg.norm();
+    if (len <= options.margin) continue;
+    const Eigen::Vector3d local_own = in_box_axes(own, p - own.center);
+    if ((local_own.cwiseAbs() - own.half).maxCoeff() <= 0.0) continue;
+    double enter = 0.0, leave = std::numeric_limits<double>::infinity();  // the ray, past p too
+    if (!slab_span(under, o, in_box_axes(under, seg), enter, leave)) continue;
+    const double slack = options.margin / len;
+    if (1.0 < enter - slack) ++out.before;
+    else if (1.0 > leave + slack) ++out.through;
+    else ++out.inside;
+  }
+  return out;
+}
+
+int grow_hidden_bottoms(std::vector<UprightBox>& boxes, const FreeSpace& seen, double float_gap,
+                        const HiddenBottomOptions& options) {
+  if (!options.enabled) return 0;
+  std::vector<Obb> solid;
+  for (const UprightBox& b : boxes) solid.push_back(Obb::from_pose(b.pose, b.size));
+  // Whether a box other than `self` holds one of 5 x 5 points spanning `box`'s footprint
+  // (edges included) `rest_depth` below its bottom.
+  const auto rests_on_another = [&](const UprightBox& box, std::size_t self) {
+    const Eigen::Matrix3d r = box.pose.q.toRotationMatrix();
+    for (int i = 0; i < 5; ++i)
+      for (int j = 0; j < 5; ++j) {
+        const Eigen::Vector3d local((i / 4.0 - 0.5) * box.size.x(), (j / 4.0 - 0.5) * box.size.y(),
+                                    -0.5 * box.size.z() - options.rest_depth);
+        const Eigen::Vector3d p = box.pose.t + r * local;
+        for (std::size_t k = 0; k < solid.size(); ++k)
+          if (k != self && solid[k].contains(p, 0.5 * options.rest_depth)) return true;
+      }
+    return false;
+  };
+  int grown = 0;
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    UprightBox& box = boxes[i];
+    if (!upright(box)) continue;
+    const double bottom = bottom_of(box);
+    if (bottom <= float_gap || rests_on_another(box, i)) continue;
+    const SpaceUnder s = rays_under(box, seen, options);
+    const std::size_t all = s.before + s.inside + s.through;
+    if (s.before < options.min_rays || static_cast<double>(s.before) < options.hidden_share * static_cast<double>(all))
+      continue;
+    const double top = bottom + box.size.z();
+    box.size.z() = top;
+    box.pose.t.z() = 0.5 * top;
+    ++grown;
+  }
+  return grown;
+}
+
+}  // namespace ksmc::stdlib::tabletop::perception

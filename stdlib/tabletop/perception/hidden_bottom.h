@@ -1,0 +1,48 @@
+// A box whose points start above the table (box_fit.h: the lowest 1 % of its points higher
+// than BoxFitOptions::float_gap) is fitted from there up, as if it rested on something. When a nearer
+// surface hides the space under it, the missing part is occlusion, not air: the box stands on
+// the table behind what hides its foot (a carton behind a lower box is seen from its
+// shoulder up). The space under the box (its footprint, inset, from the table up to its
+// bottom) is read off the cloud's rays (sensor -> point, extended past the point):
+//   * `before`: the ray ends more than `margin` before it enters the space (a nearer surface);
+//   * `inside`: the ray ends in it (within `margin`): a surface there, e.g. the box it rests on;
+//   * `through`: the ray passes through it and ends behind (the space was seen empty).
+// The box grows down to the table when the rays toward that space are hidden: at least
+// `min_rays` of them end before it and they are at least `hidden_share` of the three kinds;
+// and when no other box lies under its footprint (within `rest_depth` below its bottom): a
+// box resting on another is hidden underneath by the box it rests on.
+// The box's own points (inside the fitted box, grown by `margin`) are not counted: a ray to
+// its top continues through the box into the space under it.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "stdlib/tabletop/cloud_likelihood.h"
+#include "stdlib/tabletop/perception/box_fit.h"
+
+namespace ksmc::stdlib::tabletop::perception {
+
+struct HiddenBottomOptions {
+  bool enabled = true;
+  double inset = 0.005;        // m, the space under the box shrunk by this on every side
+  double margin = 0.01;        // m, a ray ending this close to the space ends in it
+  std::size_t min_rays = 20;
+  double hidden_share = 0.9;
+  double rest_depth = 0.015;   // m
+};
+
+struct SpaceUnder {
+  std::size_t before = 0, inside = 0, through = 0;
+};
+
+// How the rays of `seen` meet the space under `box` (an upright box, table frame).
+SpaceUnder rays_under(const UprightBox& box, const FreeSpace& seen, const HiddenBottomOptions& options = {});
+
+// Grows each upright box of `boxes` whose bottom is above `float_gap` (the box fit's), that
+// rests on no other box of `boxes` and whose space under it is hidden, down to the table
+// (its top kept). Returns how many grew. Boxes not upright are left alone.
+int grow_hidden_bottoms(std::vector<UprightBox>& boxes, const FreeSpace& seen, double float_gap,
+                        const HiddenBottomOptions& options = {});
+
+}  // namespace ksmc::stdlib::tabletop::perception
