@@ -92,18 +92,12 @@ bool RayIndex::crosses(const Obb& box, const Eigen::Vector3d& origin_in_box, std
   return segment_crosses(box, origin_in_box, fs_.sensor, fs_.points[ray], fs_.margin);
 }
 
-std::size_t RayIndex::see_through_count(const Obb& box) const {
-  const Eigen::Vector3d o = in_box_axes(box, fs_.sensor - box.center);
-  std::size_t count = 0;
-  for (const std::uint32_t r : behind_) count += crosses(box, o, r) ? 1 : 0;
-  if (nu_ == 0) return count;
+RayIndex::Toward RayIndex::cells_toward(const Obb& box, int& a0, int& a1, int& b0, int& b1) const {
+  if (nu_ == 0) return Toward::none;
   double umin = 0.0, umax = 0.0, vmin = 0.0, vmax = 0.0;
   for (int k = 0; k < 8; ++k) {
     const Eigen::Vector3d l = frame_.transpose() * (box.vertex(k) - fs_.sensor);
-    if (!(l.z() > 1e-9)) {  // reaches behind the view plane: read every ray in front
-      for (const std::uint32_t r : order_) count += crosses(box, o, r) ? 1 : 0;
-      return count;
-    }
+    if (!(l.z() > 1e-9)) return Toward::all;  // reaches behind the view plane: every ray in front
     const double u = l.x() / l.z(), v = l.y() / l.z();
     umin = k == 0 ? u : std::min(umin, u);
     umax = k == 0 ? u : std::max(umax, u);
@@ -115,14 +109,18 @@ std::size_t RayIndex::see_through_count(const Obb& box) const {
     return static_cast<int>(std::clamp(std::floor((x - origin) / cell_) + slack, 0.0, static_cast<double>(n - 1)));
   };
   if (umax < u0_ - cell_ || vmax < v0_ - cell_ || umin > u0_ + (nu_ + 1) * cell_ || vmin > v0_ + (nv_ + 1) * cell_)
-    return count;  // seen nowhere in the view
-  const int a0 = at(umin, u0_, nu_, -1), a1 = at(umax, u0_, nu_, 1);
-  const int b0 = at(vmin, v0_, nv_, -1), b1 = at(vmax, v0_, nv_, 1);
-  for (int b = b0; b <= b1; ++b) {
-    const std::size_t row = static_cast<std::size_t>(b) * static_cast<std::size_t>(nu_);
-    for (std::size_t k = start_[row + static_cast<std::size_t>(a0)]; k < start_[row + static_cast<std::size_t>(a1) + 1]; ++k)
-      count += crosses(box, o, order_[k]) ? 1 : 0;
-  }
+    return Toward::none;  // seen nowhere in the view
+  a0 = at(umin, u0_, nu_, -1);
+  a1 = at(umax, u0_, nu_, 1);
+  b0 = at(vmin, v0_, nv_, -1);
+  b1 = at(vmax, v0_, nv_, 1);
+  return Toward::cells;
+}
+
+std::size_t RayIndex::see_through_count(const Obb& box) const {
+  const Eigen::Vector3d o = in_box_axes(box, fs_.sensor - box.center);
+  std::size_t count = 0;
+  for_each_toward(box, [&](std::size_t r) { count += crosses(box, o, r) ? 1 : 0; });
   return count;
 }
 

@@ -58,7 +58,31 @@ class RayIndex {
   [[nodiscard]] std::size_t see_through_count(const Obb& box) const;
   [[nodiscard]] const FreeSpace& free_space() const noexcept { return fs_; }
 
+  // Calls f(ray) for every ray (index into free_space().points) whose line from the sensor
+  // may meet `box`: the rays binned within the bounds of its projected corners, or all of
+  // them when it reaches behind the view plane. The lines go on past their points.
+  template <class F>
+  void for_each_toward(const Obb& box, F&& f) const {
+    for (const std::uint32_t r : behind_) f(static_cast<std::size_t>(r));
+    int a0 = 0, a1 = 0, b0 = 0, b1 = 0;
+    switch (cells_toward(box, a0, a1, b0, b1)) {
+      case Toward::none: return;
+      case Toward::all:
+        for (const std::uint32_t r : order_) f(static_cast<std::size_t>(r));
+        return;
+      case Toward::cells:
+        for (int b = b0; b <= b1; ++b) {
+          const std::size_t row = static_cast<std::size_t>(b) * static_cast<std::size_t>(nu_);
+          for (std::size_t k = start_[row + static_cast<std::size_t>(a0)]; k < start_[row + static_cast<std::size_t>(a1) + 1]; ++k)
+            f(static_cast<std::size_t>(order_[k]));
+        }
+    }
+  }
+
  private:
+  enum class Toward { none, all, cells };
+  // The grid cells [a0, a1] x [b0, b1] that rays toward `box` are binned in (Toward::cells).
+  Toward cells_toward(const Obb& box, int& a0, int& a1, int& b0, int& b1) const;
   bool crosses(const Obb& box, const Eigen::Vector3d& origin_in_box, std::size_t ray) const;
 
   FreeSpace fs_;

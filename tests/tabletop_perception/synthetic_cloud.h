@@ -119,6 +119,18 @@ inline pc::Points to_sensor(const pc::Points& pts, const Eigen::Isometry3d& sens
   return out;
 }
 
+// A view of `boxes` on a 1.0 x 0.8 m table from `sensor` toward (0, 0.05, 0.05), 0.35 rad
+// half-width, 0.0015 rad steps: in the table frame, and in the sensor's own frame (the sensor
+// at the origin, axes as the table's), as scene_from_points takes a depth camera's cloud.
+inline pc::Points table_view(const Eigen::Vector3d& sensor, const std::vector<CastBox>& boxes) {
+  return cast_view(sensor, Eigen::Vector3d(0.0, 0.05, 0.05), 0.35, 0.0015, boxes, 0.5, 0.4);
+}
+inline pc::Points sensor_view(const Eigen::Vector3d& sensor, const std::vector<CastBox>& boxes) {
+  Eigen::Isometry3d sensor_from_table = Eigen::Isometry3d::Identity();
+  sensor_from_table.translation() = -sensor;
+  return to_sensor(table_view(sensor, boxes), sensor_from_table);
+}
+
 inline Eigen::Isometry3d example_sensor_pose() {
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
   t.linear() = (Eigen::AngleAxisd(2.2, Eigen::Vector3d::UnitX()) * Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()))

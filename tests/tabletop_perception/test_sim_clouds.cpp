@@ -96,7 +96,11 @@ TEST_CASE("simulated clouds: leaning boxes get tilted boxes", "[perception][sim]
 TEST_CASE("simulated clouds: a box resting on a box it overhangs is found by the free-space test", "[perception][sim]") {
   SimFamily fam = sim_families(5, 10)[2];
   REQUIRE(fam.name == "stacks");
-  const Compared c = compare(fam, 1, 10, [](CloudOptions& o, bool with) { o.fit.stacks.free_space = with; });
+  const Compared c = compare(fam, 1, 10, [](CloudOptions& o, bool with) {
+    o.fit.stacks.free_space = with;
+    o.seen_under.enabled = false;  // the later ray passes fix some of the same boxes
+    o.hidden_bottom.enabled = false;
+  });
   const int boxes = c.boxes;
   const int* within = c.within;  // footprint test alone, with the free-space test
   INFO("within tolerance of " << boxes << ": footprint test " << within[0] << ", with the free-space test " << within[1]);

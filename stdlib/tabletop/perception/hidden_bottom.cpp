@@ -18,7 +18,8 @@ double bottom_of(const UprightBox& box) { return box.pose.t.z() - 0.5 * box.size
 
 }  // namespace
 
-SpaceUnder rays_under(const UprightBox& box, const FreeSpace& seen, const HiddenBottomOptions& options) {
+SpaceUnder rays_under(const UprightBox& box, const RayIndex& rays, const HiddenBottomOptions& options) {
+  const FreeSpace& seen = rays.free_space();
   SpaceUnder out;
   const double bottom = bottom_of(box);
   const Eigen::Vector3d half(0.5 * box.size.x() - options.inset, 0.5 * box.size.y() - options.inset,
@@ -33,23 +34,24 @@ SpaceUnder rays_under(const UprightBox& box, const FreeSpace& seen, const Hidden
   own.axes = under.axes;
   own.half = 0.5 * box.size + Eigen::Vector3d::Constant(options.margin);
   const Eigen::Vector3d o = in_box_axes(under, seen.sensor - under.center);
-  for (const auto& p : seen.points) {
+  rays.for_each_toward(under, [&](std::size_t ray) {
+    const Eigen::Vector3d& p = seen.points[ray];
     const Eigen::Vector3d seg = p - seen.sensor;
     const double len = seg.norm();
-    if (len <= options.margin) continue;
+    if (len <= options.margin) return;
     const Eigen::Vector3d local_own = in_box_axes(own, p - own.center);
-    if ((local_own.cwiseAbs() - own.half).maxCoeff() <= 0.0) continue;
+    if ((local_own.cwiseAbs() - own.half).maxCoeff() <= 0.0) return;
     double enter = 0.0, leave = std::numeric_limits<double>::infinity();  // the ray, past p too
-    if (!slab_span(under, o, in_box_axes(under, seg), enter, leave)) continue;
+    if (!slab_span(under, o, in_box_axes(under, seg), enter, leave)) return;
     const double slack = options.margin / len;
     if (1.0 < enter - slack) ++out.before;
     else if (1.0 > leave + slack) ++out.through;
     else ++out.inside;
-  }
+  });
   return out;
 }
 
-int grow_hidden_bottoms(std::vector<UprightBox>& boxes, const FreeSpace& seen, double float_gap,
+int grow_hidden_bottoms(std::vector<UprightBox>& boxes, const RayIndex& rays, double float_gap,
                         const HiddenBottomOptions& options) {
   if (!options.enabled) return 0;
   std::vector<Obb> solid;
@@ -74,7 +76,7 @@ int grow_hidden_bottoms(std::vector<UprightBox>& boxes, const FreeSpace& seen, d
     if (!upright(box)) continue;
     const double bottom = bottom_of(box);
     if (bottom <= float_gap || rests_on_another(box, i)) continue;
-    const SpaceUnder s = rays_under(box, seen, options);
+    const SpaceUnder s = rays_under(box, rays, options);
     const std::size_t all = s.before + s.inside + s.through;
     if (s.before < options.min_rays || static_cast<double>(s.before) < options.hidden_share * static_cast<double>(all))
       continue;

@@ -36,13 +36,13 @@ struct SpaceUnder {
   std::size_t before = 0, inside = 0, through = 0;
 };
 
-// How the rays of `seen` meet the space under `box` (an upright box, table frame).
-SpaceUnder rays_under(const UprightBox& box, const FreeSpace& seen, const HiddenBottomOptions& options = {});
+// How the rays (RayIndex: the cloud and its sensor) meet the space under `box` (an upright box, table frame).
+SpaceUnder rays_under(const UprightBox& box, const RayIndex& rays, const HiddenBottomOptions& options = {});
 
 // Grows each upright box of `boxes` whose bottom is above `float_gap` (the box fit's), that
 // rests on no other box of `boxes` and whose space under it is hidden, down to the table
 // (its top kept). Returns how many grew. Boxes not upright are left alone.
-int grow_hidden_bottoms(std::vector<UprightBox>& boxes, const FreeSpace& seen, double float_gap,
+int grow_hidden_bottoms(std::vector<UprightBox>& boxes, const RayIndex& rays, double float_gap,
                         const HiddenBottomOptions& options = {});
 
 }  // namespace ksmc::stdlib::tabletop::perception

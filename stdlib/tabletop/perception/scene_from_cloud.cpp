@@ -91,10 +91,40 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
       ++per_cluster[c];
     }
   }
+  // A box's own points: its cluster's, or those within 1 cm of it when the cluster has several.
+  const auto points_of = [&](const UprightBox& b, std::size_t c) {
+    if (per_cluster[c] == 1) return clusters[c];
+    const Obb obb = Obb::from_pose(b.pose, b.size);
+    Points own;
+    for (const auto& p : clusters[c])
+      if (obb.contains(p, 0.01)) own.push_back(p);
+    return own;
+  };
+  const RayIndex rays(seen);  // the passes below read only the rays toward each box
+  SeenUnderOptions under = options.seen_under;
+  // A noisier cloud puts the points near a box's edges farther out: the footprint is inset by
+  // noise_inset x the table plane's RMS when that is more.
+  under.inset = std::max(under.inset, under.noise_inset * out.table.rms);
   HiddenBottomOptions hidden = options.hidden_bottom;
-  if (options.clusters.tolerance > 0.0 && clusters_options.tolerance > options.clusters.tolerance)
-    hidden.min_rays = fewer_points(hidden.min_rays, clusters_options.tolerance / options.clusters.tolerance);
-  grow_hidden_bottoms(boxes, seen, fit.box.float_gap, hidden);
+  if (options.clusters.tolerance > 0.0 && clusters_options.tolerance > options.clusters.tolerance) {
+    const double rho = clusters_options.tolerance / options.clusters.tolerance;
+    under.min_rays = fewer_points(under.min_rays, rho);
+    under.min_points = fewer_points(under.min_points, rho);
+    hidden.min_rays = fewer_points(hidden.min_rays, rho);
+  }
+  for (std::size_t i = 0; i < boxes.size(); ++i) {  // boxes the sensor saw under are cut
+    const std::size_t c = cluster_of[i];
+    const std::vector<UprightBox> parts =
+        cut_seen_under(boxes[i], points_of(boxes[i], c), rays, fit.box, fit.stacks.sides, under);
+    if (parts.empty()) continue;
+    const auto at = static_cast<std::ptrdiff_t>(i);
+    boxes.erase(boxes.begin() + at);
+    boxes.insert(boxes.begin() + at, parts.begin(), parts.end());
+    cluster_of.insert(cluster_of.begin() + at, parts.size() - 1, c);
+    per_cluster[c] += parts.size() - 1;
+    i += parts.size() - 1;
+  }
+  grow_hidden_bottoms(boxes, rays, fit.box.float_gap, hidden);
   for (std::size_t i = 0; i < boxes.size(); ++i) {
     const std::size_t c = cluster_of[i];
     SceneObject o;
@@ -102,12 +132,7 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
     o.model = "cluster";
     o.size = boxes[i].size;
     o.pose = boxes[i].pose;
-    // The box's own points: those of the cluster within 1 cm of it (stacked boxes split them).
-    const Obb obb = o.obb();
-    Points own;
-    for (const auto& p : clusters[c])
-      if (per_cluster[c] == 1 || obb.contains(p, 0.01)) own.push_back(p);
-    out.object_points.push_back(std::move(own));
+    out.object_points.push_back(points_of(boxes[i], c));
     out.cluster_of.push_back(static_cast<int>(c));
     s.objects.push_back(std::move(o));
   }

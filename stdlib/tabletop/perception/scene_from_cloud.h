@@ -15,6 +15,7 @@
 #include "stdlib/tabletop/perception/cluster_boxes.h"
 #include "stdlib/tabletop/perception/clusters.h"
 #include "stdlib/tabletop/perception/hidden_bottom.h"
+#include "stdlib/tabletop/perception/seen_under.h"
 #include "stdlib/tabletop/perception/shadow_merge.h"
 #include "stdlib/tabletop/perception/stack_split.h"
 #include "stdlib/tabletop/perception/table_plane.h"
@@ -31,6 +32,7 @@ struct CloudOptions {
   ClusterOptions clusters;
   ShadowMergeOptions shadow;  // clusters split by a resting box's shadow joined (shadow_merge.h)
   ClusterBoxOptions fit;     // boxes per cluster: tilted, stacked, upright (cluster_boxes.h)
+  SeenUnderOptions seen_under;        // boxes from the table the sensor saw under are cut (seen_under.h)
   HiddenBottomOptions hidden_bottom;  // boxes whose foot is hidden grow down to the table (hidden_bottom.h)
   Camera camera{615.0, 615.0, 320.0, 240.0, 640, 480};  // written to scene.json (overlay)
   double table_thickness = 0.05;                        // m, the slab below z = 0

@@ -1,0 +1,170 @@
+// The box fits corrected by the cloud's rays: a box whose foot is hidden behind a nearer box
+// stands on the table (hidden_bottom.h), and a box resting on a narrower one whose top it
+// hides is two boxes when the sensor saw under its overhang (seen_under.h); a box the sensor
+// sees under, one resting on another, and boxes standing on the table keep their fits.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <vector>
+
+#include "stdlib/tabletop/perception/hidden_bottom.h"
+#include "stdlib/tabletop/perception/scene_from_cloud.h"
+#include "stdlib/tabletop/perception/seen_under.h"
+#include "synthetic_cloud.h"
+
+using namespace ksmc::stdlib::tabletop::perception;
+using ksmc::stdlib::tabletop::FreeSpace;
+using ksmc::stdlib::tabletop::RayIndex;
+using ksmc::stdlib::tabletop::SceneObject;
+namespace tp = ksmc::tests::perception;
+
+namespace {
+
+const Eigen::Vector3d kFront(0.0, -0.9, 0.55);  // in front of the scene
+const Eigen::Vector3d kAside(0.35, -0.7, 0.6);  // in front and to the side
+
+struct Heights {
+  double bottom, top;
+};
+
+// The scene with the hidden-foot and seen-under steps on or off.
+CloudScene run(const Points& cloud, bool hidden_bottom, bool seen_under) {
+  CloudOptions options;
+  options.hidden_bottom.enabled = hidden_bottom;
+  options.seen_under.enabled = seen_under;
+  return scene_from_points(cloud, "synthetic", options);
+}
+
+// The scene object nearest (x, y) on the table, its bottom and top heights.
+Heights nearest(const CloudScene& cs, double x, double y) {
+  const SceneObject* best = nullptr;
+  for (const auto& o : cs.scene.objects)
+    if (best == nullptr || (o.pose.t.head<2>() - Eigen::Vector2d(x, y)).norm() <
+                               (best->pose.t.head<2>() - Eigen::Vector2d(x, y)).norm())
+      best = &o;
+  REQUIRE(best != nullptr);
+  return {best->obb().min_z(), best->obb().max_z()};
+}
+
+
+std::vector<Heights> heights(const CloudScene& cs) {  // lowest top first
+  std::vector<Heights> h;
+  for (const auto& o : cs.scene.objects) h.push_back({o.obb().min_z(), o.obb().max_z()});
+  std::sort(h.begin(), h.end(), [](const Heights& a, const Heights& b) { return a.top < b.top; });
+  return h;
+}
+
+
+// A book lying on a narrower box, flush with it at the front and 3 cm over it on either side:
+// the book hides the lower box's top, and the front faces make one cluster of the two.
+const std::vector<tp::CastBox> kBookOnBox{tp::upright_box(0.0, 0.03, 0.0, Eigen::Vector3d(0.13, 0.21, 0.06)),
+                                          tp::upright_box(0.0, 0.05, 0.06, Eigen::Vector3d(0.19, 0.25, 0.04))};
+
+}  // namespace
+
+TEST_CASE("hidden bottom: a carton behind a lower box stands on the table", "[perception][hidden_bottom]") {
+  // The front box (12 cm) hides the carton's foot: the sensor sees it from about 8.6 cm up.
+  const Points cloud = tp::sensor_view(kFront, {tp::upright_box(0.0, -0.05, 0.0, Eigen::Vector3d(0.2, 0.08, 0.12)),
+                             tp::upright_box(0.0, 0.10, 0.0, Eigen::Vector3d(0.08, 0.08, 0.25))});
+  const Heights before = nearest(run(cloud, false, true), 0.0, 0.10);
+  CHECK(before.bottom > 0.05);  // the fit alone starts the carton where its points start
+  const CloudScene cs = run(cloud, true, true);
+  REQUIRE(cs.scene.objects.size() == 2);
+  const Heights after = nearest(cs, 0.0, 0.10);
+  CHECK(after.bottom == Approx(0.0).margin(0.003));
+  CHECK(after.top == Approx(0.25).margin(0.005));
+  const Heights front = nearest(cs, 0.0, -0.05);  // the front box is untouched
+  CHECK(front.bottom == Approx(0.0).margin(0.003));
+  CHECK(front.top == Approx(0.12).margin(0.005));
+}
+
+TEST_CASE("hidden bottom: a box the sensor sees under keeps its bottom", "[perception][hidden_bottom]") {
+  // Nothing in front: the rays under the box reach the table behind it.
+  const CloudScene cs = run(tp::sensor_view(kFront, {tp::upright_box(0.0, 0.10, 0.09, Eigen::Vector3d(0.08, 0.08, 0.16))}), true, true);
+  REQUIRE(cs.scene.objects.size() == 1);
+  CHECK(nearest(cs, 0.0, 0.10).bottom == Approx(0.09).margin(0.006));
+}
+
+TEST_CASE("hidden bottom: a box resting on another keeps its bottom", "[perception][hidden_bottom]") {
+  // The lower box hides the space under the upper one, which rests on it.
+  const CloudScene cs = run(tp::sensor_view(kFront, {tp::upright_box(0.0, 0.10, 0.0, Eigen::Vector3d(0.14, 0.14, 0.08)),
+                                  tp::upright_box(0.0, 0.10, 0.08, Eigen::Vector3d(0.08, 0.08, 0.10))}),
+                            true, true);
+  REQUIRE(cs.scene.objects.size() == 2);
+  const std::vector<Heights> h = heights(cs);
+  CHECK(h[0].top == Approx(0.08).margin(0.005));
+  CHECK(h[1].bottom == Approx(0.08).margin(0.006));
+}
+
+TEST_CASE("hidden bottom: the counts of rays under a box, and boxes left alone", "[perception][hidden_bottom]") {
+  FreeSpace seen;
+  seen.sensor = kFront;
+  seen.points = tp::table_view(kFront, {tp::upright_box(0.0, -0.05, 0.0, Eigen::Vector3d(0.2, 0.08, 0.12)),
+                                        tp::upright_box(0.0, 0.10, 0.0, Eigen::Vector3d(0.08, 0.08, 0.25))});
+  UprightBox box;  // the carton's visible part, from 9 cm up
+  box.size = Eigen::Vector3d(0.08, 0.08, 0.16);
+  box.pose.t = Eigen::Vector3d(0.0, 0.10, 0.09 + 0.08);
+  const RayIndex rays(seen);
+  const SpaceUnder s = rays_under(box, rays);
+  CHECK(s.before > 100);  // the front box hides the space under it ...
+  CHECK(s.before > 9 * (s.inside + s.through));
+  std::vector<UprightBox> boxes{box};
+  CHECK(grow_hidden_bottoms(boxes, rays, 0.03) == 1);
+  CHECK(boxes[0].size.z() == Approx(0.25));
+  CHECK(boxes[0].pose.t.z() == Approx(0.125));
+
+  UprightBox tilted = box;  // not upright: left alone
+  tilted.pose.q = Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitX()));
+  UprightBox low = box;  // starting within the float gap: left alone
+  low.pose.t.z() = 0.02 + 0.08;
+  std::vector<UprightBox> others{tilted, low};
+  CHECK(grow_hidden_bottoms(others, rays, 0.03) == 0);
+  HiddenBottomOptions off;
+  off.enabled = false;
+  std::vector<UprightBox> disabled{box};
+  CHECK(grow_hidden_bottoms(disabled, rays, 0.03, off) == 0);
+}
+
+TEST_CASE("seen under: a book on a smaller box is two boxes", "[perception][seen_under]") {
+  const Points cloud = tp::sensor_view(kAside, kBookOnBox);
+  const std::vector<Heights> before = heights(run(cloud, true, false));
+  REQUIRE(before.size() == 1);  // one box from the table up to the book's top
+  CHECK(before[0].bottom == Approx(0.0).margin(0.003));
+  CHECK(before[0].top == Approx(0.10).margin(0.004));
+  const std::vector<Heights> after = heights(run(cloud, true, true));
+  REQUIRE(after.size() == 2);
+  CHECK(after[0].bottom == Approx(0.0).margin(0.003));  // the lower box, from its visible faces
+  CHECK(after[0].top == Approx(0.06).margin(0.01));
+  CHECK(after[1].bottom == Approx(0.06).margin(0.01));  // the book, resting where the rays stop
+  CHECK(after[1].top == Approx(0.10).margin(0.004));
+}
+
+TEST_CASE("seen under: boxes standing on the table stay whole", "[perception][seen_under]") {
+  const std::vector<tp::CastBox> boxes{tp::upright_box(-0.1, 0.05, 0.0, Eigen::Vector3d(0.08, 0.08, 0.20)),
+                                       tp::upright_box(0.12, 0.0, 0.0, Eigen::Vector3d(0.19, 0.25, 0.04))};
+  const std::vector<Heights> h = heights(run(tp::sensor_view(kAside, boxes), true, true));
+  REQUIRE(h.size() == 2);
+  for (const Heights& b : h) CHECK(b.bottom == Approx(0.0).margin(0.003));
+  CHECK(h[0].top == Approx(0.04).margin(0.004));
+  CHECK(h[1].top == Approx(0.20).margin(0.004));
+}
+
+TEST_CASE("seen under: the height the sensor saw up to", "[perception][seen_under]") {
+  FreeSpace seen;
+  seen.sensor = kAside;
+  seen.points = tp::table_view(kAside, kBookOnBox);
+  const RayIndex rays(seen);
+  UprightBox one;  // the single box from the table up to the book's top
+  one.size = Eigen::Vector3d(0.19, 0.25, 0.10);
+  one.pose.t = Eigen::Vector3d(0.0, 0.05, 0.05);
+  const double cut = seen_under_height(one, rays);
+  CHECK(cut > 0.045);  // up to just under the book, less what the inset hides
+  CHECK(cut < 0.06);
+  UprightBox lower = one;  // where the lower box really is: nothing seen through it
+  lower.size = Eigen::Vector3d(0.10, 0.12, 0.06);
+  lower.pose.t = Eigen::Vector3d(0.0, 0.05, 0.03);
+  CHECK(seen_under_height(lower, rays) == 0.0);
+  SeenUnderOptions off;
+  off.enabled = false;
+  CHECK(cut_seen_under(one, seen.points, rays, BoxFitOptions{}, SideStepOptions{}, off).empty());
+}
