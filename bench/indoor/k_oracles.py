@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """How far K can rise around a run's units: bench/indoor/k_oracles.py MAP.png OUT/world.json
 
-Takes an indoor run's world as it is and asks what two kinds of extra world content could add to
-the cell prediction rate K, each chosen by an oracle that sees the observed map:
+Takes an indoor run's world as it is and asks what extra world content, or moved unit edges,
+could add to the cell prediction rate K, each chosen by an oracle that sees the observed map:
 
 * furniture: every 8-connected blob of non-free cells (occupied or unknown) inside the units'
   free part gets the box over it that gains most of three: none, a solid box predicting its
@@ -14,8 +14,8 @@ the cell prediction rate K, each chosen by an oracle that sees the observed map:
 * unit edges: each side of each unit moved up to 3 cells along its normal where that raises K
   (coordinate ascent, two sweeps): how far the run's rectangles are from a local optimum of K.
 
-Both are upper estimates for a world model with such objects: the oracle picks each box knowing
-the answer and pays nothing for it, and a sampler would also have to find the boxes. Prints K
+The first two are upper estimates for a world model with such objects: the oracle picks each
+box knowing the answer and pays nothing for it, and a sampler would also have to find them. Prints K
 and the misses allowed by K >= 0.95 first. Uses k_misses.py's classification and rasterisation.
 Needs numpy, scipy, PIL, matplotlib.
 """
