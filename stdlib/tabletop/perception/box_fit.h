@@ -3,6 +3,8 @@
 // The box stands on the table unless the cluster clearly starts above it.
 #pragma once
 
+#include <cmath>
+
 #include "stdlib/tabletop/perception/cloud_io.h"
 #include "stdlib/tabletop/pose.h"
 
@@ -21,6 +23,13 @@ struct UprightBox {
   Pose pose;                      // table frame; axis 2 = table normal, axis 0 at yaw in [0, 90 deg)
   Eigen::Vector3d size = Eigen::Vector3d::Zero();
 };
+
+// Whether `box` stands upright (axis 2 along the table normal; a tilted fit's is not), and the
+// height of its bottom face (upright boxes).
+inline bool is_upright(const UprightBox& box) {
+  return std::abs((box.pose.q * Eigen::Vector3d::UnitZ()).z()) > 1.0 - 1e-9;
+}
+inline double bottom_height(const UprightBox& box) { return box.pose.t.z() - 0.5 * box.size.z(); }
 
 // `points` in the table frame (z up, top at 0), at least one point.
 UprightBox fit_upright_box(const Points& points, const BoxFitOptions& options = {});

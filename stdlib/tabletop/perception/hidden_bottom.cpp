@@ -8,20 +8,10 @@
 
 namespace ksmc::stdlib::tabletop::perception {
 
-namespace {
-
-bool upright(const UprightBox& box) {
-  return std::abs((box.pose.q * Eigen::Vector3d::UnitZ()).z()) > 1.0 - 1e-9;
-}
-
-double bottom_of(const UprightBox& box) { return box.pose.t.z() - 0.5 * box.size.z(); }
-
-}  // namespace
-
 SpaceUnder rays_under(const UprightBox& box, const RayIndex& rays, const HiddenBottomOptions& options) {
   const FreeSpace& seen = rays.free_space();
   SpaceUnder out;
-  const double bottom = bottom_of(box);
+  const double bottom = bottom_height(box);
   const Eigen::Vector3d half(0.5 * box.size.x() - options.inset, 0.5 * box.size.y() - options.inset,
                              0.5 * bottom - options.inset);
   if (half.minCoeff() <= 0.0) return out;
@@ -73,8 +63,8 @@ int grow_hidden_bottoms(std::vector<UprightBox>& boxes, const RayIndex& rays, do
   int grown = 0;
   for (std::size_t i = 0; i < boxes.size(); ++i) {
     UprightBox& box = boxes[i];
-    if (!upright(box)) continue;
-    const double bottom = bottom_of(box);
+    if (!is_upright(box)) continue;
+    const double bottom = bottom_height(box);
     if (bottom <= float_gap || rests_on_another(box, i)) continue;
     const SpaceUnder s = rays_under(box, rays, options);
     const std::size_t all = s.before + s.inside + s.through;

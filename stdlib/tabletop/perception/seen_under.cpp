@@ -62,17 +62,18 @@ std::vector<UprightBox> cut_seen_under(const UprightBox& box, const Points& poin
                                        const BoxFitOptions& fit, const SideStepOptions& sides,
                                        const SeenUnderOptions& options) {
   if (!options.enabled) return {};
-  if (std::abs((box.pose.q * Eigen::Vector3d::UnitZ()).z()) < 1.0 - 1e-9) return {};  // tilted
-  const double bottom = box.pose.t.z() - 0.5 * box.size.z(), top = bottom + box.size.z();
+  if (!is_upright(box)) return {};
+  const double bottom = bottom_height(box), top = bottom + box.size.z();
   if (bottom > fit.float_gap) return {};
   const double cut = seen_under_height(box, rays, options);
   if (cut <= options.min_cut || top - cut < options.min_upper) return {};
   Points upper, lower;
   for (const auto& p : points) (p.z() > cut ? upper : lower).push_back(p);
   if (upper.size() < options.min_points) return {};
-  if (lower.size() >= options.min_points && !set_back(box, lower, options)) return {};
+  const bool lower_box = lower.size() >= options.min_points;
+  if (lower_box && !set_back(box, lower, options)) return {};
   std::vector<UprightBox> out;
-  if (lower.size() >= options.min_points) out = fit_column(lower, 0.0, fit, sides);
+  if (lower_box) out = fit_column(lower, 0.0, fit, sides);
   for (const UprightBox& b : fit_column(upper, cut, fit, sides)) out.push_back(b);
   return out;
 }
