@@ -80,6 +80,30 @@ TEST_CASE("tilted box: a leaning box seen by one face only is grown down to the 
   CHECK(e.centre < 0.004);
 }
 
+TEST_CASE("tilted box: a small box leaning about the normal of its large face is found by that face's outline",
+          "[perception][tilted]") {
+  // A cream cheese box leaning about the normal of its 93 x 62 mm face: that face stays
+  // vertical, its outline turns; the tilted faces are 29 mm wide, too narrow to start a box.
+  const Eigen::Vector3d size(0.029, 0.093, 0.062);
+  for (double tilt : {15.0, 28.0}) {
+    const Eigen::Isometry3d truth = resting(0.3, tilt * kDeg, size);
+    Points pts;
+    add_visible_box(pts, truth, size, 0.003, kSensor, 0.0005);
+    INFO("tilt " << tilt);
+    ClusterBoxOptions o;
+    const auto boxes = fit_cluster_boxes(pts, o);
+    REQUIRE(boxes.size() == 1);
+    const BoxError e = error_of(boxes[0], truth, size);
+    CHECK(e.angle < 2.0 * kDeg);
+    CHECK(e.max_size() < 0.006);
+    CHECK(e.centre < 0.005);
+    o.tilt.leaning_outlines = false;  // without the outline: one loose upright box
+    const auto upright = fit_cluster_boxes(pts, o);
+    REQUIRE(upright.size() == 1);
+    CHECK(error_of(upright[0], truth, size).angle > 0.5 * tilt * kDeg);
+  }
+}
+
 TEST_CASE("tilted box: upright boxes keep the upright fit, square footprints included", "[perception][tilted]") {
   for (const Eigen::Vector3d& size : {Eigen::Vector3d(0.07, 0.07, 0.19), Eigen::Vector3d(0.10, 0.10, 0.04),
                                      Eigen::Vector3d(0.20, 0.06, 0.05)}) {

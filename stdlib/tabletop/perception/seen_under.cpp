@@ -64,16 +64,16 @@ std::vector<UprightBox> cut_seen_under(const UprightBox& box, const Points& poin
   if (!options.enabled) return {};
   if (!is_upright(box)) return {};
   const double bottom = bottom_height(box), top = bottom + box.size.z();
-  if (bottom > fit.float_gap) return {};
+  const double base = bottom > fit.float_gap ? bottom : 0.0;  // a floating box's lower part floats too
   const double cut = seen_under_height(box, rays, options);
-  if (cut <= options.min_cut || top - cut < options.min_upper) return {};
+  if (cut <= base + options.min_cut || top - cut < options.min_upper) return {};
   Points upper, lower;
   for (const auto& p : points) (p.z() > cut ? upper : lower).push_back(p);
   if (upper.size() < options.min_points) return {};
   const bool lower_box = lower.size() >= options.min_points;
   if (lower_box && !set_back(box, lower, options)) return {};
   std::vector<UprightBox> out;
-  if (lower_box) out = fit_column(lower, 0.0, fit, sides);
+  if (lower_box) out = fit_column(lower, base, fit, sides);
   for (const UprightBox& b : fit_column(upper, cut, fit, sides)) out.push_back(b);
   return out;
 }

@@ -13,6 +13,9 @@
 // that reach the box's outline on every side (within `margin`) are its own side faces, not a
 // narrower box's: a cloud that holds points the sensor could not have seen (several views
 // merged, or the table sampled under the boxes) crosses boxes that are solid, and is left alone.
+// A box that floats (its cluster starts above BoxFitOptions::float_gap: its foot is hidden) is
+// read the same way from its own bottom up: a tissue box lying on a cereal box whose lower
+// part a neighbour hides; its lower part then floats too (grow_hidden_bottoms may extend it).
 #pragma once
 
 #include <cstddef>
@@ -40,9 +43,9 @@ struct SeenUnderOptions {
 // 0 when fewer than options.min_rays rays cross it.
 double seen_under_height(const UprightBox& box, const RayIndex& rays, const SeenUnderOptions& options = {});
 
-// The boxes that replace `box` (upright, standing on the table: bottom within fit.float_gap;
-// `points` are its points) when the sensor saw under it: the lower part's boxes (fit_column
-// from the table) when it has options.min_points points, then the upper part's, resting at
+// The boxes that replace `box` (upright; `points` are its points) when the sensor saw under it:
+// the lower part's boxes (fit_column from the table, or from the box's bottom when that is
+// above fit.float_gap) when it has options.min_points points, then the upper part's, resting at
 // the cut. Empty: `box` stays as it is.
 std::vector<UprightBox> cut_seen_under(const UprightBox& box, const Points& points, const RayIndex& rays,
                                        const BoxFitOptions& fit, const SideStepOptions& sides,

@@ -62,6 +62,34 @@ std::vector<Face>::const_iterator tilted_seed(const Points& points, const std::v
   });
 }
 
+// Whether vertical face `f` (`rect`: its outline) is the face of a box leaning about the
+// face's normal: that face stays vertical, but its outline turns with the lean. Its sides are
+// then at least min_tilt_deg off both vertical and horizontal, and the turned rectangle covers
+// at most outline_ratio of the area of the rectangle that stands upright around the same
+// points (a face cut by an occluder's diagonal edge is no rectangle at all: both cover it alike).
+bool leaning_outline(const Points& points, const Face& f, const PlaneRect& rect, const TiltOptions& o) {
+  if (std::abs(f.normal.z()) > std::sin(o.min_tilt_deg * kDeg)) return false;
+  const double side = std::asin(std::min(1.0, std::abs(rect.u.z())));
+  if (side < o.min_tilt_deg * kDeg || side > (90.0 - o.min_tilt_deg) * kDeg) return false;
+  const Eigen::Vector3d across = f.normal.cross(Eigen::Vector3d::UnitZ()).normalized();
+  std::vector<double> h, z;
+  for (int i : f.points) {
+    const Eigen::Vector3d d = points[static_cast<std::size_t>(i)] - f.centroid;
+    h.push_back(d.dot(across));
+    z.push_back(d.z());
+  }
+  const double upright = (quantile(h, 0.99) - quantile(h, 0.01)) * (quantile(z, 0.99) - quantile(z, 0.01));
+  return 4.0 * rect.half.x() * rect.half.y() <= o.outline_ratio * upright;
+}
+
+// The largest vertical face with `min_points` whose outline leans (leaning_outline).
+std::vector<Face>::const_iterator outline_seed(const Points& points, const std::vector<Face>& faces,
+                                               const TiltOptions& o, std::size_t min_points) {
+  return std::find_if(faces.begin(), faces.end(), [&](const Face& f) {
+    return f.points.size() >= min_points && leaning_outline(points, f, face_rect(points, f), o);
+  });
+}
+
 // A leaning box rests on the table: when its lowest corner is above it, the thinnest
 // extent (the one the sensor saw least of: a single face gives no thickness) is grown on
 // its lower side until that corner reaches the table, unless the grown part would take
@@ -163,10 +191,14 @@ std::optional<TiltedFit> fit_tilted_box(const Points& points, const TiltOptions&
   const auto probe_points = static_cast<std::size_t>(
       static_cast<double>(o.min_face_points) * static_cast<double>(sparse.size()) / static_cast<double>(points.size()));
   const std::vector<Face> sparse_faces = planar_faces(sparse, probe);
-  if (tilted_seed(sparse, sparse_faces, o, probe_points) == sparse_faces.end()) return std::nullopt;
+  if (tilted_seed(sparse, sparse_faces, o, probe_points) == sparse_faces.end() &&
+      (!o.leaning_outlines || outline_seed(sparse, sparse_faces, o, probe_points) == sparse_faces.end()))
+    return std::nullopt;
 
   const std::vector<Face> faces = planar_faces(points, o.faces);
-  const auto seed = tilted_seed(points, faces, o, o.min_face_points);
+  auto seed = tilted_seed(points, faces, o, o.min_face_points);
+  const bool by_outline = seed == faces.end();  // no tilted face: a vertical face's outline leans
+  if (by_outline && o.leaning_outlines) seed = outline_seed(points, faces, o, o.min_face_points);
   if (seed == faces.end()) return std::nullopt;
   const PlaneRect seed_rect = face_rect(points, *seed);
 
@@ -187,9 +219,11 @@ std::optional<TiltedFit> fit_tilted_box(const Points& points, const TiltOptions&
     });
     if (touches) box_faces.push_back(&f);
   }
+  // A vertical seed gives the box's tilt by its outline, and no thickness: another face must.
+  if (by_outline && box_faces.size() < 2) return std::nullopt;
   Eigen::Matrix3d axes;
   axes.col(0) = seed->normal;
-  const Eigen::Vector3d second = box_faces.size() > 1 ? box_faces[1]->normal : seed_rect.u;
+  const Eigen::Vector3d second = box_faces.size() > 1 && !by_outline ? box_faces[1]->normal : seed_rect.u;
   axes.col(1) = (second - second.dot(axes.col(0)) * axes.col(0)).normalized();
   axes.col(2) = axes.col(0).cross(axes.col(1));
 

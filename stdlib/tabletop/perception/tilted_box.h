@@ -5,7 +5,9 @@
 // that face's normal and the normal of an adjacent perpendicular face (the box's other
 // visible faces), its extents are the trimmed extents of those faces' points along the
 // three axes. The cluster's points explained by that box are removed; what is left (the
-// upright neighbour it leans on, more tilted boxes) is fitted again by the caller.
+// upright neighbour it leans on, more tilted boxes) is fitted again by the caller. A box that
+// leans about the normal of its one large visible face shows no tilted large face: that face
+// stays vertical, but its outline is a turned rectangle, which then gives the orientation.
 #pragma once
 
 #include <optional>
@@ -34,6 +36,8 @@ struct TiltOptions {
   double fill_cell = 0.008;         // m; a face's rows across each in-plane axis are this wide ...
   double fill_ratio = 0.35;         // ... and it keeps the rows at least this long against its longest
   double probe_voxel = 0.008;       // m; the faces are first looked for on a copy this sparse
+  bool leaning_outlines = true;     // with no tilted face, a vertical face whose outline leans starts one
+  double outline_ratio = 0.8;       // ... when its turned rectangle covers at most this of the upright one
 };
 
 struct TiltedFit {
