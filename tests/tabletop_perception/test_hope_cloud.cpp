@@ -55,6 +55,9 @@ TEST_CASE("HOPE cloud: boxes, registration to the annotated boxes, errors", "[pe
       CHECK(o.error.angle < 3.0 * std::numbers::pi / 180.0);
     }
     if (truth[i].name == "TomatoSauce" || truth[i].name == "Parmesan") CHECK(o.error.centre < 0.01);
+    // Standing cartons seen by one large side face and a top cut by the image border: the
+    // side face turns the box (box_fit.h, wall_yaw; without it 44 and 37 degrees off).
+    if (truth[i].name == "Milk" || truth[i].name == "OrangeJuice") CHECK(o.error.angle < 6.0 * std::numbers::pi / 180.0);
   }
   // The boxes stand on the table: stable, in contact with it, higher than it.
   const auto ev = ksmc::stdlib::tabletop::extract_evidence(cs.scene);

@@ -17,6 +17,12 @@ struct BoxFitOptions {
   double float_gap = 0.03;        // m; a cluster whose 1 % height quantile is higher starts there
   double min_size = 0.005;        // m, lower bound of every extent
   bool side_faces_only = false;   // the points are side faces (no top): footprint by faces_rect
+  bool wall_yaw = true;           // a large vertical face turns the footprint to its normal
+  double wall_share = 0.2;        // ... when it holds this share of the points (on a sparse copy)
+  double wall_voxel = 0.008;      // m, the sparse copy's voxel
+  double wall_tilt_deg = 5.0;     // a face this close to vertical is a wall
+  double wall_agree_deg = 1.0;    // the minimal rectangle stays when a side is this close to the wall
+  double wall_beyond = 0.05;      // the footprint ends at the wall unless more points than this lie beyond it
 };
 
 struct UprightBox {

@@ -86,22 +86,28 @@ Rect2 best_rect(const std::vector<Eigen::Vector2d>& points, double trim, Cost co
       if (e.norm() > 0.0) try_direction(e.normalized());
     }
   }
-  if (trim > 0.0 && points.size() >= 4) {
-    const Eigen::Vector2d u = best.u, v = best.v();
-    std::vector<double> su, sv;
-    su.reserve(points.size());
-    sv.reserve(points.size());
-    for (const auto& q : points) su.push_back(q.dot(u)), sv.push_back(q.dot(v));
-    const double lu = quantile(su, trim), hu = quantile(su, 1.0 - trim);
-    const double lv = quantile(sv, trim), hv = quantile(sv, 1.0 - trim);
-    best.half = 0.5 * Eigen::Vector2d(hu - lu, hv - lv);
-    best.center = 0.5 * (lu + hu) * u + 0.5 * (lv + hv) * v;
-  }
+  if (trim > 0.0 && points.size() >= 4) return rect_along(points, best.u, trim);
   canonicalise(best);
   return best;
 }
 
 }  // namespace
+
+Rect2 rect_along(const std::vector<Eigen::Vector2d>& points, const Eigen::Vector2d& u, double trim) {
+  Rect2 r;
+  r.u = u.normalized();
+  const Eigen::Vector2d v = r.v();
+  std::vector<double> su, sv;
+  su.reserve(points.size());
+  sv.reserve(points.size());
+  for (const auto& q : points) su.push_back(q.dot(r.u)), sv.push_back(q.dot(v));
+  const double lu = quantile(su, trim), hu = quantile(su, 1.0 - trim);
+  const double lv = quantile(sv, trim), hv = quantile(sv, 1.0 - trim);
+  r.half = 0.5 * Eigen::Vector2d(hu - lu, hv - lv);
+  r.center = 0.5 * (lu + hu) * r.u + 0.5 * (lv + hv) * v;
+  canonicalise(r);
+  return r;
+}
 
 Rect2 min_area_rect(const std::vector<Eigen::Vector2d>& points, double trim) {
   return best_rect(points, trim, [](const Rect2& r) { return r.area(); });

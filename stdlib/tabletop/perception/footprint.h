@@ -31,6 +31,10 @@ std::vector<Eigen::Vector2d> convex_hull(std::vector<Eigen::Vector2d> points);
 // the points' coordinates, which discards isolated noise points at the border.
 Rect2 min_area_rect(const std::vector<Eigen::Vector2d>& points, double trim = 0.0);
 
+// The rectangle with one side along `u` (any length) around `points` (at least one), each side
+// at the trim / (1 - trim) quantile of the points' coordinates (trim 0: their extremes).
+Rect2 rect_along(const std::vector<Eigen::Vector2d>& points, const Eigen::Vector2d& u, double trim = 0.0);
+
 // The rectangle whose sides the points lie on (least summed distance to the nearest side),
 // among the same candidate directions; `trim` as above. For a box seen only by its side
 // faces: the minimal-area rectangle of an L of two faces may lie along the L's diagonal.

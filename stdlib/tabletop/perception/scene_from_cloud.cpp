@@ -30,6 +30,7 @@ ClusterBoxOptions for_sampling(ClusterBoxOptions fit, double rho) {
   fit.tilt.edge_gap *= rho;
   fit.tilt.fill_cell *= rho;
   fit.tilt.probe_voxel *= rho;
+  fit.box.wall_voxel *= rho;
   fit.stacks.cell *= rho;
   fit.stacks.column_margin *= rho;
   fit.stacks.min_points = fewer(fit.stacks.min_points);
