@@ -1,13 +1,16 @@
 // The box fits corrected by the cloud's rays: a box whose foot is hidden behind a nearer box
 // stands on the table (hidden_bottom.h), and a box resting on a narrower one whose top it
 // hides is two boxes when the sensor saw under its overhang (seen_under.h); a box the sensor
-// sees under, one resting on another, and boxes standing on the table keep their fits.
+// sees under, one resting on another, and boxes standing on the table keep their fits; the two
+// ends of a box with a box across it are one box, two boxes with a seen gap stay two
+// (occluded_gap.h).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <vector>
 
 #include "stdlib/tabletop/perception/hidden_bottom.h"
+#include "stdlib/tabletop/perception/occluded_gap.h"
 #include "stdlib/tabletop/perception/scene_from_cloud.h"
 #include "stdlib/tabletop/perception/seen_under.h"
 #include "synthetic_cloud.h"
@@ -167,4 +170,53 @@ TEST_CASE("seen under: the height the sensor saw up to", "[perception][seen_unde
   SeenUnderOptions off;
   off.enabled = false;
   CHECK(cut_seen_under(one, seen.points, rays, BoxFitOptions{}, SideStepOptions{}, off).empty());
+}
+
+namespace {
+
+// The scene's boxes (table frame) with the occluded-gap step on or off.
+std::vector<UprightBox> gap_boxes(const Points& cloud, bool bridge) {
+  CloudOptions options;
+  options.occluded_gap.enabled = bridge;
+  const CloudScene cs = scene_from_points(cloud, "synthetic", options);
+  std::vector<UprightBox> out;
+  for (const auto& o : cs.scene.objects) out.push_back({o.pose, o.size});
+  return out;
+}
+
+// The box of `boxes` nearest (x, y) and the count of boxes within `r` of it.
+const UprightBox& nearest_box(const std::vector<UprightBox>& boxes, double x, double y) {
+  REQUIRE(!boxes.empty());
+  return *std::min_element(boxes.begin(), boxes.end(), [&](const UprightBox& a, const UprightBox& b) {
+    return (a.pose.t.head<2>() - Eigen::Vector2d(x, y)).norm() < (b.pose.t.head<2>() - Eigen::Vector2d(x, y)).norm();
+  });
+}
+
+}  // namespace
+
+TEST_CASE("occluded gap: a long box with a box across it is one box", "[perception][occluded_gap]") {
+  // A 20 cm toothpaste along x; a 22 cm box lies across its middle (resting on it). From the
+  // front and above, the crossing box hides the toothpaste's middle: two ends are seen.
+  const Eigen::Vector3d paste(0.20, 0.04, 0.035);
+  const std::vector<tp::CastBox> scene{tp::upright_box(0.0, 0.05, 0.0, paste),
+                                       tp::upright_box(0.0, 0.05, 0.035, Eigen::Vector3d(0.05, 0.22, 0.04))};
+  const Points cloud = tp::sensor_view(kFront, scene);
+  const std::vector<UprightBox> before = gap_boxes(cloud, false), after = gap_boxes(cloud, true);
+  INFO("boxes before " << before.size() << ", after " << after.size());
+  CHECK(after.size() + 1 == before.size());
+  const UprightBox& one = nearest_box(after, 0.0, 0.05);
+  const Eigen::Vector2d footprint = one.size.head<2>();
+  CHECK(footprint.maxCoeff() == Approx(paste.x()).margin(0.01));
+  CHECK(footprint.minCoeff() == Approx(paste.y()).margin(0.01));
+  CHECK(one.size.z() == Approx(paste.z()).margin(0.005));
+  CHECK(one.pose.t.x() == Approx(0.0).margin(0.005));
+}
+
+TEST_CASE("occluded gap: two boxes in a row with the gap seen stay two", "[perception][occluded_gap]") {
+  // The same two ends with nothing across them: the sensor sees the table between them.
+  const Eigen::Vector3d end(0.075, 0.04, 0.035);
+  const std::vector<tp::CastBox> scene{tp::upright_box(-0.0625, 0.05, 0.0, end), tp::upright_box(0.0625, 0.05, 0.0, end)};
+  const std::vector<UprightBox> after = gap_boxes(tp::sensor_view(kFront, scene), true);
+  REQUIRE(after.size() == 2);
+  for (const UprightBox& b : after) CHECK(b.size.head<2>().maxCoeff() == Approx(end.x()).margin(0.01));
 }

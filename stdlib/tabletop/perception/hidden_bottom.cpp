@@ -8,37 +8,37 @@
 
 namespace ksmc::stdlib::tabletop::perception {
 
-SpaceUnder rays_under(const UprightBox& box, const RayIndex& rays, const HiddenBottomOptions& options) {
+SpaceUnder rays_meeting(const Obb& space, const std::vector<Obb>& own, const RayIndex& rays, double margin) {
   const FreeSpace& seen = rays.free_space();
   SpaceUnder out;
-  const double bottom = bottom_height(box);
-  const Eigen::Vector3d half(0.5 * box.size.x() - options.inset, 0.5 * box.size.y() - options.inset,
-                             0.5 * bottom - options.inset);
-  if (half.minCoeff() <= 0.0) return out;
-  Obb under;
-  under.center = Eigen::Vector3d(box.pose.t.x(), box.pose.t.y(), 0.5 * bottom);
-  under.axes = box.pose.q.toRotationMatrix();
-  under.half = half;
-  Obb own;  // the fitted box grown by the margin: its own points are not counted
-  own.center = box.pose.t;
-  own.axes = under.axes;
-  own.half = 0.5 * box.size + Eigen::Vector3d::Constant(options.margin);
-  const Eigen::Vector3d o = in_box_axes(under, seen.sensor - under.center);
-  rays.for_each_toward(under, [&](std::size_t ray) {
+  const Eigen::Vector3d o = in_box_axes(space, seen.sensor - space.center);
+  rays.for_each_toward(space, [&](std::size_t ray) {
     const Eigen::Vector3d& p = seen.points[ray];
     const Eigen::Vector3d seg = p - seen.sensor;
     const double len = seg.norm();
-    if (len <= options.margin) return;
-    const Eigen::Vector3d local_own = in_box_axes(own, p - own.center);
-    if ((local_own.cwiseAbs() - own.half).maxCoeff() <= 0.0) return;
+    if (len <= margin) return;
+    for (const Obb& b : own)
+      if ((in_box_axes(b, p - b.center).cwiseAbs() - b.half).maxCoeff() <= margin) return;
     double enter = 0.0, leave = std::numeric_limits<double>::infinity();  // the ray, past p too
-    if (!slab_span(under, o, in_box_axes(under, seg), enter, leave)) return;
-    const double slack = options.margin / len;
+    if (!slab_span(space, o, in_box_axes(space, seg), enter, leave)) return;
+    const double slack = margin / len;
     if (1.0 < enter - slack) ++out.before;
     else if (1.0 > leave + slack) ++out.through;
     else ++out.inside;
   });
   return out;
+}
+
+SpaceUnder rays_under(const UprightBox& box, const RayIndex& rays, const HiddenBottomOptions& options) {
+  const double bottom = bottom_height(box);
+  const Eigen::Vector3d half(0.5 * box.size.x() - options.inset, 0.5 * box.size.y() - options.inset,
+                             0.5 * bottom - options.inset);
+  if (half.minCoeff() <= 0.0) return {};
+  Obb under;
+  under.center = Eigen::Vector3d(box.pose.t.x(), box.pose.t.y(), 0.5 * bottom);
+  under.axes = box.pose.q.toRotationMatrix();
+  under.half = half;
+  return rays_meeting(under, {Obb::from_pose(box.pose, box.size)}, rays, options.margin);
 }
 
 int grow_hidden_bottoms(std::vector<UprightBox>& boxes, const RayIndex& rays, double float_gap,

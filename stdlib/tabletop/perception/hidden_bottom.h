@@ -36,6 +36,11 @@ struct SpaceUnder {
   std::size_t before = 0, inside = 0, through = 0;
 };
 
+// How the rays (RayIndex: the cloud and its sensor, each line going on past its point) meet
+// `space`, the rays to points within `margin` of one of the boxes `own` left out: ending more
+// than `margin` before it, in it, or passing through it.
+SpaceUnder rays_meeting(const Obb& space, const std::vector<Obb>& own, const RayIndex& rays, double margin);
+
 // How the rays (RayIndex: the cloud and its sensor) meet the space under `box` (an upright box, table frame).
 SpaceUnder rays_under(const UprightBox& box, const RayIndex& rays, const HiddenBottomOptions& options = {});
 

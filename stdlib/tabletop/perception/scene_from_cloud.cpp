@@ -107,11 +107,13 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
   // noise_inset x the table plane's RMS when that is more.
   under.inset = std::max(under.inset, under.noise_inset * out.table.rms);
   HiddenBottomOptions hidden = options.hidden_bottom;
+  OccludedGapOptions gap = options.occluded_gap;
   if (options.clusters.tolerance > 0.0 && clusters_options.tolerance > options.clusters.tolerance) {
     const double rho = clusters_options.tolerance / options.clusters.tolerance;
     under.min_rays = fewer_points(under.min_rays, rho);
     under.min_points = fewer_points(under.min_points, rho);
     hidden.min_rays = fewer_points(hidden.min_rays, rho);
+    gap.min_rays = fewer_points(gap.min_rays, rho);
   }
   for (std::size_t i = 0; i < boxes.size(); ++i) {  // boxes the sensor saw under are cut
     const std::size_t c = cluster_of[i];
@@ -126,6 +128,27 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
     i += parts.size() - 1;
   }
   grow_hidden_bottoms(boxes, rays, fit.box.float_gap, hidden);
+  // The two ends of a box something lies across become one box (and one cluster, when each
+  // end was a cluster of its own).
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    for (std::size_t j = i + 1; j < boxes.size(); ++j) {
+      const std::size_t ci = cluster_of[i], cj = cluster_of[j];
+      if (ci != cj && (per_cluster[ci] != 1 || per_cluster[cj] != 1)) continue;
+      const std::optional<UprightBox> one = bridge_occluded_gap(boxes[i], boxes[j], rays, gap);
+      if (!one) continue;
+      boxes[i] = *one;
+      boxes.erase(boxes.begin() + static_cast<std::ptrdiff_t>(j));
+      cluster_of.erase(cluster_of.begin() + static_cast<std::ptrdiff_t>(j));
+      if (ci == cj) {
+        --per_cluster[ci];
+      } else {
+        clusters[ci].insert(clusters[ci].end(), clusters[cj].begin(), clusters[cj].end());
+        clusters[cj].clear();
+        per_cluster[cj] = 0;
+      }
+      j = i;  // the longer box may reach one more
+    }
+  }
   for (std::size_t i = 0; i < boxes.size(); ++i) {
     const std::size_t c = cluster_of[i];
     SceneObject o;
