@@ -29,15 +29,16 @@ double top_of_heights(const std::vector<double>& z, const BoxFitOptions& options
   return quantile_of(band, 0.5);
 }
 
-// The horizontal normal of the largest vertical planar face of `points`, when that face holds
-// options.wall_share of them (found on a copy thinned to options.wall_voxel, then refitted to
-// all points within half a voxel of its plane and span): a box face, whose normal is one of the
-// box's horizontal axes however the rest of the footprint is cut (by an occluder, by the image
-// border). Nothing when there is none.
+// A vertical face's trace on the table.
 struct Wall {
-  Eigen::Vector2d normal;  // on the table, unit
-  Eigen::Vector2d point;   // a point of the face's trace (the mean of its points)
+  Eigen::Vector2d normal;  // unit
+  Eigen::Vector2d point;   // a point of the trace (the mean of the face's points)
 };
+
+// The largest vertical planar face of `points`, when it holds options.wall_share of them (found
+// on a copy thinned to options.wall_voxel, then refitted to all points within half a voxel of
+// its plane and span): a box face, whose normal is one of the box's horizontal axes however the
+// rest of the footprint is cut (by an occluder, by the image border). Nothing when there is none.
 std::optional<Wall> find_wall(const Points& points, const BoxFitOptions& options) {
   const double voxel = options.wall_voxel;
   const Points sparse = voxel_subsample(points, voxel);
@@ -75,9 +76,9 @@ std::optional<Wall> find_wall(const Points& points, const BoxFitOptions& options
 }
 
 // `rect` (along the wall) ends at the wall on the side the wall is nearer, when it reaches more
-// than half a voxel past it: the wall is a face of the box, so the few points beyond it (at most wall_beyond of them: a real sensor's flying
-// pixels along the depth edge) are not the box's. More points beyond it: the wall is inside a
-// merged cluster, and the rectangle stays.
+// than half a voxel past it: the wall is a face of the box, so the few points beyond it (at
+// most wall_beyond of them: a real sensor's flying pixels along the depth edge) are not the
+// box's. More points beyond it: the wall is inside a merged cluster, and the rectangle stays.
 void end_at_wall(Rect2& rect, const std::vector<Eigen::Vector2d>& flat, const Wall& wall, const BoxFitOptions& options) {
   const int k = std::abs(rect.u.dot(wall.normal)) >= std::abs(rect.v().dot(wall.normal)) ? 0 : 1;
   const Eigen::Vector2d axis = k == 0 ? rect.u : rect.v();

@@ -149,6 +149,23 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
       j = i;  // the longer box may reach one more
     }
   }
+  // A thin box whose points lie on a larger box is a strip of its face (face_strip.h).
+  for (std::size_t j = 0; j < boxes.size(); ++j) {
+    const Points own = points_of(boxes[j], cluster_of[j]);
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      if (i == j || !is_face_strip(boxes[j], own, boxes[i], options.face_strip)) continue;
+      const std::size_t ci = cluster_of[i], cj = cluster_of[j];
+      if (ci != cj && per_cluster[cj] == 1) {
+        clusters[ci].insert(clusters[ci].end(), clusters[cj].begin(), clusters[cj].end());
+        clusters[cj].clear();
+      }
+      --per_cluster[cj];
+      boxes.erase(boxes.begin() + static_cast<std::ptrdiff_t>(j));
+      cluster_of.erase(cluster_of.begin() + static_cast<std::ptrdiff_t>(j));
+      --j;  // the next box is at j now
+      break;
+    }
+  }
   for (std::size_t i = 0; i < boxes.size(); ++i) {
     const std::size_t c = cluster_of[i];
     SceneObject o;
