@@ -7,7 +7,7 @@
 namespace ksmc::stdlib::tabletop::perception {
 
 bool is_face_strip(const UprightBox& box, const Points& own, const UprightBox& outer, const FaceStripOptions& o) {
-  if (own.empty() || box.size.minCoeff() > o.thin || outer.size.prod() <= box.size.prod()) return false;
+  if (own.empty() || !is_thin(box, o) || outer.size.prod() <= box.size.prod()) return false;
   const Obb solid = Obb::from_pose(outer.pose, outer.size);
   const auto on = std::count_if(own.begin(), own.end(), [&](const Eigen::Vector3d& p) {
     return surface_distance(solid, p) <= o.margin;

@@ -16,6 +16,11 @@ struct FaceStripOptions {
   double margin = 0.01;   // ... lie within this (m) of `outer`'s surface
 };
 
+// Whether `box` has an extent under options.thin: one face of it was seen.
+inline bool is_thin(const UprightBox& box, const FaceStripOptions& options = {}) {
+  return box.size.minCoeff() <= options.thin;
+}
+
 // Whether `box` (its points `own`) is a strip of `outer`'s faces: `box` is thin, `outer` has
 // the larger volume, and options.share of `own` lie within options.margin of `outer`'s surface.
 bool is_face_strip(const UprightBox& box, const Points& own, const UprightBox& outer,

@@ -128,6 +128,18 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
     i += parts.size() - 1;
   }
   grow_hidden_bottoms(boxes, rays, fit.box.float_gap, hidden);
+  // Box j goes into box i: it is removed, and its points become box i's cluster's when it was
+  // its own cluster's only box.
+  const auto drop_into = [&](std::size_t j, std::size_t i) {
+    const std::size_t ci = cluster_of[i], cj = cluster_of[j];
+    if (ci != cj && per_cluster[cj] == 1) {
+      clusters[ci].insert(clusters[ci].end(), clusters[cj].begin(), clusters[cj].end());
+      clusters[cj].clear();
+    }
+    --per_cluster[cj];
+    boxes.erase(boxes.begin() + static_cast<std::ptrdiff_t>(j));
+    cluster_of.erase(cluster_of.begin() + static_cast<std::ptrdiff_t>(j));
+  };
   // The two ends of a box something lies across become one box (and one cluster, when each
   // end was a cluster of its own).
   for (std::size_t i = 0; i < boxes.size(); ++i) {
@@ -137,31 +149,17 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
       const std::optional<UprightBox> one = bridge_occluded_gap(boxes[i], boxes[j], rays, gap);
       if (!one) continue;
       boxes[i] = *one;
-      boxes.erase(boxes.begin() + static_cast<std::ptrdiff_t>(j));
-      cluster_of.erase(cluster_of.begin() + static_cast<std::ptrdiff_t>(j));
-      if (ci == cj) {
-        --per_cluster[ci];
-      } else {
-        clusters[ci].insert(clusters[ci].end(), clusters[cj].begin(), clusters[cj].end());
-        clusters[cj].clear();
-        per_cluster[cj] = 0;
-      }
+      drop_into(j, i);
       j = i;  // the longer box may reach one more
     }
   }
   // A thin box whose points lie on a larger box is a strip of its face (face_strip.h).
   for (std::size_t j = 0; j < boxes.size(); ++j) {
+    if (!is_thin(boxes[j], options.face_strip)) continue;
     const Points own = points_of(boxes[j], cluster_of[j]);
     for (std::size_t i = 0; i < boxes.size(); ++i) {
       if (i == j || !is_face_strip(boxes[j], own, boxes[i], options.face_strip)) continue;
-      const std::size_t ci = cluster_of[i], cj = cluster_of[j];
-      if (ci != cj && per_cluster[cj] == 1) {
-        clusters[ci].insert(clusters[ci].end(), clusters[cj].begin(), clusters[cj].end());
-        clusters[cj].clear();
-      }
-      --per_cluster[cj];
-      boxes.erase(boxes.begin() + static_cast<std::ptrdiff_t>(j));
-      cluster_of.erase(cluster_of.begin() + static_cast<std::ptrdiff_t>(j));
+      drop_into(j, i);
       --j;  // the next box is at j now
       break;
     }
