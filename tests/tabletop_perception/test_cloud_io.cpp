@@ -118,7 +118,7 @@ TEST_CASE("cloud_io reads PCD ascii, binary and binary_compressed", "[perception
   const std::string refs = std::string(1, '\0') + std::string(1, '\0') + std::string(1, '\xe0') + std::string(1, '\x32') +
                            std::string(1, '\0');
   // They decompress to five points at (0, 0, 0): missing returns only, so the error counts them.
-  check_error("z.pcd", zeros + raw(std::uint32_t{5}) + raw(std::uint32_t{60}) + refs, "all 5 points are at (0, 0, 0)");
+  check_error("z.pcd", zeros + raw(std::uint32_t{5}) + raw(std::uint32_t{60}) + refs, "all 5 points are missing returns");
 }
 
 TEST_CASE("cloud_io refuses corrupt PLY files, naming the file and the place", "[perception][cloud_io]") {
@@ -190,5 +190,22 @@ TEST_CASE("cloud_io leaves out points at (0, 0, 0), a depth sensor's missing ret
   REQUIRE(read.size() == kPoints.size());
   for (std::size_t i = 0; i < read.size(); ++i) CHECK((read[i] - kPoints[i]).norm() < 1e-6);
   // Nothing but missing returns: an empty cloud, named.
-  check_error("all_missing.ply", ply_text({Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()}), "all 2 points are at (0, 0, 0)");
+  check_error("all_missing.ply", ply_text({Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()}), "all 2 points are missing returns");
+}
+
+TEST_CASE("cloud_io leaves out NaN points of an organised PCD, PCL's missing returns", "[perception][cloud_io]") {
+  // A 3 x 2 image-shaped cloud: kPoints' first four, and two pixels with no return.
+  const std::string organised = "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 3\nHEIGHT 2\n"
+                                "POINTS 6\nDATA ascii\n0 0 2.5\nnan nan nan\n100 0 5.5\n0 100 10.25\nnan nan nan\n50 50 20\n";
+  std::size_t missing = 0;
+  const Points read = load_cloud(write("organised.pcd", organised), Units::m, &missing);
+  CHECK(missing == 2);
+  REQUIRE(read.size() == 4);
+  for (std::size_t i = 0; i < read.size(); ++i) CHECK((read[i] - kPoints[i]).norm() < 1e-6);
+  // One NaN coordinate is a corrupt point even there; so is an all-NaN point of an unorganised cloud.
+  std::string partial = organised;
+  partial.replace(partial.find("50 50 20"), 8, "50 nan 20");
+  check_error("partial.pcd", partial, "point 5: not a finite coordinate (50, nan, 20)");
+  check_error("flat.pcd", pcd_header("ascii", "x y z", "4 4 4", "F F F", "2") + "0 0 1\nnan nan nan\n",
+              "point 1: not a finite coordinate (nan, nan, nan) (NaN marks a missing return only in an organised PCD");
 }

@@ -85,6 +85,26 @@ TEST_CASE("front end: table frame, two boxes, scene.json round trip", "[percepti
   CHECK(scene_json_text(cs.scene) == scene_json_text(scene_from_points(two_box_scene(), "synthetic").scene));
 }
 
+TEST_CASE("front end: the floor beside the table does not turn the table upside down", "[perception][front_end]") {
+  // A 0.8 x 0.6 m table, a 10 cm box on it, and around the table a floor 30 cm below (the
+  // floor the camera sees past the table's far edge, as in PCL's table_scene_mug_stereo_textured):
+  // more floor points lie within side_band below the plane than box points above it. Over
+  // the table's own rectangle only the box counts, and the box is above.
+  Points pts;
+  tp::add_table(pts, 0.4, 0.3, 0.005);
+  tp::add_box(pts, 0.05, -0.02, 0.4, Eigen::Vector3d(0.1, 0.1, 0.1), 0.004);
+  const std::size_t on_table = pts.size();
+  for (double x = -0.7; x <= 0.7; x += 0.008)
+    for (double y = -0.6; y <= 0.6; y += 0.008)
+      if (std::abs(x) > 0.42 || std::abs(y) > 0.32) pts.emplace_back(x, y, -0.3);
+  REQUIRE(pts.size() - on_table > 2 * 4000);  // the floor's points outnumber the box's
+  const CloudScene cs = scene_from_points(tp::to_sensor(pts, tp::example_sensor_pose()), "floor");
+  const Eigen::Vector3d n = tp::example_sensor_pose().linear().col(2);
+  CHECK(cs.table.table_in_cloud.rotation().col(2).dot(n) == Approx(1.0).margin(1e-6));
+  REQUIRE(cs.scene.objects.size() == 1);
+  CHECK(cs.scene.objects[0].size.z() == Approx(0.1).margin(0.004));
+}
+
 TEST_CASE("front end: a sparse cloud gets its clustering tolerance from its point spacing", "[perception][front_end]") {
   // A 14 mm grid (a low-resolution sensor, a far table, a voxel filter): no point has a
   // neighbour within the 8 mm floor.

@@ -334,7 +334,8 @@ bool lzf_decompress(std::string_view in, std::string& out) {
   return op == out.size();
 }
 
-std::vector<double> read_pcd(std::string_view bytes, const std::string& file) {
+// `organised`: HEIGHT > 1, an image-shaped cloud (PCL marks its missing returns with NaN).
+std::vector<double> read_pcd(std::string_view bytes, const std::string& file, bool& organised) {
   Lines lines(bytes);
   std::string_view line;
   std::vector<std::string_view> fields, sizes, types, counts;
@@ -381,6 +382,7 @@ std::vector<double> read_pcd(std::string_view bytes, const std::string& file) {
   if (!has_width && !has_points) fail(file, "neither WIDTH nor POINTS in the header");
   if (has_width && has_points && area != points)
     fail(file, fmt::format("WIDTH {} x HEIGHT {} is not POINTS {}", width, height, points));
+  organised = height > 1;
 
   std::vector<Scalar> scalar(fields.size());
   std::vector<std::uint64_t> count(fields.size(), 1);
@@ -482,7 +484,8 @@ Points load_cloud(const std::filesystem::path& path, Units units, std::size_t* o
   buffer << in.rdbuf();
   if (!in && !in.eof()) throw CloudError(fmt::format("{}: cannot read file", name));
   const std::string bytes = std::move(buffer).str();
-  const std::vector<double> xyz = ext == ".ply" ? read_ply(bytes, name) : read_pcd(bytes, name);
+  bool organised = false;
+  const std::vector<double> xyz = ext == ".ply" ? read_ply(bytes, name) : read_pcd(bytes, name, organised);
   if (xyz.empty()) throw CloudError(fmt::format("{}: empty cloud: no points", name));
 
   const double scale = metres_per_unit(units);
@@ -491,16 +494,24 @@ Points load_cloud(const std::filesystem::path& path, Units units, std::size_t* o
   std::size_t origin = 0;
   for (std::size_t i = 0; i < xyz.size() / 3; ++i) {
     const double x = xyz[3 * i], y = xyz[3 * i + 1], z = xyz[3 * i + 2];
-    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
-      throw CloudError(fmt::format("{}: point {}: not a finite coordinate ({}, {}, {})", name, i, x, y, z));
-    if (x == 0.0 && y == 0.0 && z == 0.0) {  // a missing return
+    // A missing return: (0, 0, 0) from a depth camera, or a point that is NaN in x, y and z
+    // in an organised PCD (PCL's convention, `is_dense` false). Anything else not finite is
+    // a corrupt point.
+    const bool no_return = (x == 0.0 && y == 0.0 && z == 0.0) ||
+                           (organised && std::isnan(x) && std::isnan(y) && std::isnan(z));
+    if (no_return) {
       ++origin;
       continue;
     }
+    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
+      throw CloudError(fmt::format("{}: point {}: not a finite coordinate ({}, {}, {}){}", name, i, x, y, z,
+                                   std::isnan(x) && std::isnan(y) && std::isnan(z)
+                                       ? " (NaN marks a missing return only in an organised PCD, HEIGHT > 1)"
+                                       : ""));
     out.emplace_back(scale * x, scale * y, scale * z);
   }
   if (out.empty())
-    throw CloudError(fmt::format("{}: empty cloud: all {} points are at (0, 0, 0) (missing returns)", name, origin));
+    throw CloudError(fmt::format("{}: empty cloud: all {} points are missing returns (at (0, 0, 0) or NaN)", name, origin));
   if (origin_points != nullptr) *origin_points = origin;
   return out;
 }

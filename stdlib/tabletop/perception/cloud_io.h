@@ -34,9 +34,10 @@ double metres_per_unit(Units units);
 // x, y, z of any numeric type). Throws CloudError "<file>: ..." when the file is
 // unreadable or corrupt (a count or size the bytes cannot hold, a missing x / y / z, a
 // non-number), has no points, or holds a NaN / infinite coordinate (the message gives the
-// index of the first bad point). Points at exactly (0, 0, 0) are a depth sensor's missing
-// returns (the sensor's own centre is never a surface it sees): they are left out and
-// counted in `*origin_points` when given; a cloud of nothing else has no points.
+// index of the first bad point). Missing returns are left out and counted in
+// `*origin_points` when given: points at exactly (0, 0, 0) (a depth sensor's own centre is
+// never a surface it sees) and, in an organised PCD (HEIGHT > 1), points NaN in all of x,
+// y and z (PCL's convention). A cloud of nothing else has no points.
 Points load_cloud(const std::filesystem::path& path, Units units = Units::m, std::size_t* origin_points = nullptr);
 
 // Deterministic ASCII PLY (x y z, metres, 6 decimals), written atomically.

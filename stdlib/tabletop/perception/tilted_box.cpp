@@ -52,14 +52,11 @@ bool meets_plane(const Points& points, const Face& f, const Face& plane, double 
   return one_sided && quantile(far, 0.01) <= gap;
 }
 
-// The largest face that is tilted, has `min_points` and is no narrower than min_face_side
-// in its own plane (a box face, not a bevel, a label or a carton's gable top).
-std::vector<Face>::const_iterator tilted_seed(const Points& points, const std::vector<Face>& faces, const TiltOptions& o,
-                                              std::size_t min_points) {
-  return std::find_if(faces.begin(), faces.end(), [&](const Face& f) {
-    return f.points.size() >= min_points && is_tilted(f.normal, o.min_tilt_deg * kDeg) &&
-           2.0 * face_rect(points, f).half.minCoeff() >= o.min_face_side;
-  });
+// Whether face `f` can start a tilted box: it is tilted, has `min_points` and is no narrower
+// than min_face_side in its own plane (a box face, not a bevel or a label).
+bool tilted_seed(const Points& points, const Face& f, const TiltOptions& o, std::size_t min_points) {
+  return f.points.size() >= min_points && is_tilted(f.normal, o.min_tilt_deg * kDeg) &&
+         2.0 * face_rect(points, f).half.minCoeff() >= o.min_face_side;
 }
 
 // Whether vertical face `f` (`rect`: its outline) is the face of a box leaning about the
@@ -82,12 +79,9 @@ bool leaning_outline(const Points& points, const Face& f, const PlaneRect& rect,
   return 4.0 * rect.half.x() * rect.half.y() <= o.outline_ratio * upright;
 }
 
-// The largest vertical face with `min_points` whose outline leans (leaning_outline).
-std::vector<Face>::const_iterator outline_seed(const Points& points, const std::vector<Face>& faces,
-                                               const TiltOptions& o, std::size_t min_points) {
-  return std::find_if(faces.begin(), faces.end(), [&](const Face& f) {
-    return f.points.size() >= min_points && leaning_outline(points, f, face_rect(points, f), o);
-  });
+// Whether vertical face `f` with `min_points` can start a tilted box by its outline.
+bool outline_seed(const Points& points, const Face& f, const TiltOptions& o, std::size_t min_points) {
+  return f.points.size() >= min_points && leaning_outline(points, f, face_rect(points, f), o);
 }
 
 // A leaning box rests on the table: when its lowest corner is above it, the thinnest
@@ -164,52 +158,21 @@ std::vector<int> face_core(const Points& points, const Face& f, const Eigen::Mat
   return out;
 }
 
-}  // namespace
-
-void canonical_axes(Eigen::Matrix3d& axes, Eigen::Vector3d& size) {
-  int up = 0;
-  for (int k = 1; k < 3; ++k)
-    if (std::abs(axes(2, k)) > std::abs(axes(2, up))) up = k;
-  const int a = (up + 1) % 3, b = (up + 2) % 3;
-  const int first = std::abs(axes(0, a)) >= std::abs(axes(0, b)) ? a : b;
-  const int second = first == a ? b : a;
-  Eigen::Matrix3d r;
-  r.col(2) = (axes(2, up) < 0 ? -1.0 : 1.0) * axes.col(up);
-  r.col(0) = (axes(0, first) < 0 ? -1.0 : 1.0) * axes.col(first);
-  r.col(1) = r.col(2).cross(r.col(0));
-  size = Eigen::Vector3d(size(first), size(second), size(up));
-  axes = r;
-}
-
-std::optional<TiltedFit> fit_tilted_box(const Points& points, const TiltOptions& o) {
-  // A quick look on a sparse copy first: most clusters are upright boxes.
-  const Points sparse = voxel_subsample(points, o.probe_voxel);
-  FaceOptions probe = o.faces;
-  probe.normal_radius = std::max(probe.normal_radius, 2.0 * o.probe_voxel);
-  probe.grow_radius = std::max(probe.grow_radius, 2.0 * o.probe_voxel);
-  probe.min_points = 10;
-  const auto probe_points = static_cast<std::size_t>(
-      static_cast<double>(o.min_face_points) * static_cast<double>(sparse.size()) / static_cast<double>(points.size()));
-  const std::vector<Face> sparse_faces = planar_faces(sparse, probe);
-  if (tilted_seed(sparse, sparse_faces, o, probe_points) == sparse_faces.end() &&
-      (!o.leaning_outlines || outline_seed(sparse, sparse_faces, o, probe_points) == sparse_faces.end()))
-    return std::nullopt;
-
-  const std::vector<Face> faces = planar_faces(points, o.faces);
-  auto seed = tilted_seed(points, faces, o, o.min_face_points);
-  const bool by_outline = seed == faces.end();  // no tilted face: a vertical face's outline leans
-  if (by_outline && o.leaning_outlines) seed = outline_seed(points, faces, o, o.min_face_points);
-  if (seed == faces.end()) return std::nullopt;
+// The tilted box started by face `seed` (a tilted face, or by_outline: a vertical face whose
+// outline leans), or nothing when it has no box or its own points lie inside it rather than
+// on its faces.
+std::optional<TiltedFit> box_of_seed(const Points& points, const std::vector<Face>& faces, const Face& seed_face,
+                                     bool by_outline, const TiltOptions& o) {
+  const Face* const seed = &seed_face;
   const PlaneRect seed_rect = face_rect(points, *seed);
-
   // Faces of the same box: perpendicular to the seed and touching it.
   Points seed_points;
   for (int i : seed->points) seed_points.push_back(points[static_cast<std::size_t>(i)]);
   const PointGrid near_seed(seed_points, o.adjacent);
   std::vector<int> nb;
-  std::vector<const Face*> box_faces{&*seed};
+  std::vector<const Face*> box_faces{seed};
   for (const Face& f : faces) {
-    if (&f == &*seed || std::abs(f.normal.dot(seed->normal)) > std::sin(o.perpendicular_deg * kDeg)) continue;
+    if (&f == seed || std::abs(f.normal.dot(seed->normal)) > std::sin(o.perpendicular_deg * kDeg)) continue;
     if (!meets_plane(points, f, *seed, o.side_tolerance, o.edge_gap) ||
         !meets_plane(points, *seed, f, o.side_tolerance, o.edge_gap))
       continue;
@@ -246,11 +209,68 @@ std::optional<TiltedFit> fit_tilted_box(const Points& points, const TiltOptions&
   out.box.size = size;
   out.box.pose.t = centre;
   out.box.pose.q = Eigen::Quaterniond(axes).normalized();
+  std::size_t own = 0, interior = 0;
   for (const auto& p : points) {
     const Eigen::Vector3d d = (axes.transpose() * (p - centre)).cwiseAbs() - 0.5 * size;
-    if (d.maxCoeff() > o.own_margin) out.rest.push_back(p);
+    if (d.maxCoeff() > o.own_margin) {
+      out.rest.push_back(p);
+    } else {
+      ++own;
+      interior += d.maxCoeff() < -o.interior_depth;
+    }
   }
+  if (static_cast<double>(interior) > o.max_interior * static_cast<double>(own)) return std::nullopt;
   return out;
+}
+
+}  // namespace
+
+void canonical_axes(Eigen::Matrix3d& axes, Eigen::Vector3d& size) {
+  int up = 0;
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(axes(2, k)) > std::abs(axes(2, up))) up = k;
+  const int a = (up + 1) % 3, b = (up + 2) % 3;
+  const int first = std::abs(axes(0, a)) >= std::abs(axes(0, b)) ? a : b;
+  const int second = first == a ? b : a;
+  Eigen::Matrix3d r;
+  r.col(2) = (axes(2, up) < 0 ? -1.0 : 1.0) * axes.col(up);
+  r.col(0) = (axes(0, first) < 0 ? -1.0 : 1.0) * axes.col(first);
+  r.col(1) = r.col(2).cross(r.col(0));
+  size = Eigen::Vector3d(size(first), size(second), size(up));
+  axes = r;
+}
+
+std::optional<TiltedFit> fit_tilted_box(const Points& points, const TiltOptions& o) {
+  // A quick look on a sparse copy first: most clusters are upright boxes.
+  const Points sparse = voxel_subsample(points, o.probe_voxel);
+  FaceOptions probe = o.faces;
+  probe.normal_radius = std::max(probe.normal_radius, 2.0 * o.probe_voxel);
+  probe.grow_radius = std::max(probe.grow_radius, 2.0 * o.probe_voxel);
+  probe.min_points = 10;
+  const auto probe_points = static_cast<std::size_t>(
+      static_cast<double>(o.min_face_points) * static_cast<double>(sparse.size()) / static_cast<double>(points.size()));
+  const std::vector<Face> sparse_faces = planar_faces(sparse, probe);
+  const bool any_tilted = std::any_of(sparse_faces.begin(), sparse_faces.end(),
+                                      [&](const Face& f) { return tilted_seed(sparse, f, o, probe_points); });
+  const bool any_outline = o.leaning_outlines && std::any_of(sparse_faces.begin(), sparse_faces.end(), [&](const Face& f) {
+    return outline_seed(sparse, f, o, probe_points);
+  });
+  if (!any_tilted && !any_outline) return std::nullopt;
+
+  // The tilted faces from the largest, then (with none that gives a box) the vertical faces
+  // whose outline leans: the first whose box has its points on its faces.
+  const std::vector<Face> faces = planar_faces(points, o.faces);
+  bool tilted_face = false;
+  for (const Face& f : faces) {
+    if (!tilted_seed(points, f, o, o.min_face_points)) continue;
+    tilted_face = true;
+    if (std::optional<TiltedFit> fit = box_of_seed(points, faces, f, false, o)) return fit;
+  }
+  if (tilted_face || !o.leaning_outlines) return std::nullopt;
+  for (const Face& f : faces)
+    if (outline_seed(points, f, o, o.min_face_points))
+      if (std::optional<TiltedFit> fit = box_of_seed(points, faces, f, true, o)) return fit;
+  return std::nullopt;
 }
 
 }  // namespace ksmc::stdlib::tabletop::perception

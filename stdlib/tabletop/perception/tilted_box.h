@@ -38,6 +38,10 @@ struct TiltOptions {
   double probe_voxel = 0.008;       // m; the faces are first looked for on a copy this sparse
   bool leaning_outlines = true;     // with no tilted face, a vertical face whose outline leans starts one
   double outline_ratio = 0.8;       // ... when its turned rectangle covers at most this of the upright one
+  double interior_depth = 0.010;    // m; a box whose own points lie this far inside it ...
+  double max_interior = 0.2;        // ... more often than this is not the box they were seen on (the
+                                    // sensor sees surfaces): a slope of a non-box shape, the gable top
+                                    // of a carton seen by a Kinect, tilts no box
 };
 
 struct TiltedFit {
@@ -46,7 +50,8 @@ struct TiltedFit {
 };
 
 // The tilted box of the cluster's largest tilted face, or nothing when every large face
-// is horizontal or vertical (an upright box, or a stack of them: fit_stacked_boxes).
+// is horizontal or vertical (an upright box, or a stack of them: fit_stacked_boxes), or
+// when the box it gives has its own points inside it rather than on its faces.
 std::optional<TiltedFit> fit_tilted_box(const Points& points, const TiltOptions& options = {});
 
 // Axes (columns) and sizes turned into the canonical form used for every box: axis 2 is
