@@ -264,9 +264,10 @@ Likelihood gaussian(double sigma, bool robust, double outlier_px, double estimat
 }  // namespace keypoints
 
 namespace cloud {
-Likelihood surface(double sigma, bool robust, double outlier, double free_space_cost) {
+Likelihood surface(double sigma, bool robust, double outlier, double free_space_cost, double inside_sigma,
+                   double voxel) {
   Likelihood l;
-  l.cloud = CloudSurface{sigma, robust, outlier, free_space_cost};
+  l.cloud = CloudSurface{sigma, robust, outlier, free_space_cost, inside_sigma, voxel};
   return l;
 }
 }  // namespace cloud

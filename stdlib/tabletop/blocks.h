@@ -48,6 +48,8 @@ struct CloudSurface {
   bool robust = true;
   double outlier = 0.02;          // [m] cap of a point's distance in the robust variant
   double free_space_cost = 0.0;   // log-likelihood per blocked ray; 0: off
+  double inside_sigma = 0.02;     // [m] scale of the distance of points inside the box
+  double voxel = 0.005;           // [m] the points are thinned to one per cube this wide; 0: all
 };
 // A domain's likelihood: the product of its likelihood items (the generated binding writes
 // `b.likelihood = first; b.likelihood *= next; ...`), each block at most once (ksmc check).
@@ -147,7 +149,8 @@ Likelihood gaussian(double sigma, bool robust, double outlier_px, double estimat
 }  // namespace keypoints
 
 namespace cloud {
-Likelihood surface(double sigma, bool robust, double outlier, double free_space_cost);
+Likelihood surface(double sigma, bool robust, double outlier, double free_space_cost, double inside_sigma,
+                   double voxel);
 }  // namespace cloud
 
 namespace pose {

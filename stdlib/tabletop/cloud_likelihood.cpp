@@ -9,21 +9,26 @@
 
 namespace ksmc::stdlib::tabletop {
 
-double surface_distance(const Obb& box, const Eigen::Vector3d& p) {
+double signed_surface_distance(const Obb& box, const Eigen::Vector3d& p) {
   const Eigen::Vector3d local = in_box_axes(box, p - box.center);
   const Eigen::Vector3d excess = local.cwiseAbs() - box.half;  // > 0 outside along that axis
   if (excess.maxCoeff() > 0.0) return excess.cwiseMax(0.0).norm();
-  return -excess.maxCoeff();  // inside: distance to the nearest face
+  return excess.maxCoeff();  // inside: minus the distance to the nearest face
 }
 
+double surface_distance(const Obb& box, const Eigen::Vector3d& p) { return std::abs(signed_surface_distance(box, p)); }
+
 double cloud_log_likelihood(const Points& points, const Obb& box, const CloudLikelihoodParams& params) {
-  const double norm = std::log(params.sigma * std::sqrt(2.0 * std::numbers::pi));
-  const double inv = 1.0 / (2.0 * params.sigma * params.sigma);
+  const double norm = std::log(0.5 * (params.sigma + params.inside_sigma) * std::sqrt(2.0 * std::numbers::pi));
+  const double inv_out = 1.0 / (2.0 * params.sigma * params.sigma);
+  const double inv_in = 1.0 / (2.0 * params.inside_sigma * params.inside_sigma);
   double sum = 0.0;
   for (const auto& p : points) {
-    double d = surface_distance(box, p);
+    const double signed_d = signed_surface_distance(box, p);
+    const bool outside = signed_d > 0.0;
+    double d = std::abs(signed_d);
     if (params.robust) d = std::min(d, params.outlier_distance);
-    sum -= d * d * inv + norm;
+    sum -= d * d * (outside ? inv_out : inv_in) + norm;
   }
   return sum;
 }

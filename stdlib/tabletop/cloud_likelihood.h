@@ -1,8 +1,10 @@
 // Cloud likelihood (`cloud.surface` of stdlib/tabletop.ksm; the --cloud front end's scenes):
-// each point of an object's cluster is a Gaussian observation of the box surface,
-//     log p(p | box) = -d(p, surface)^2 / (2 sigma^2) - log(sigma sqrt(2 pi)),
-// d = distance to the nearest face (inside or outside the box). The robust variant caps d
-// at `outlier_distance` (a point that far costs a constant). Evaluated per object: a move
+// each point of an object's cluster is an observation of the box surface,
+//     log p(p | box) = -d(p, surface)^2 / (2 s^2) - log((sigma + inside_sigma) / 2 sqrt(2 pi)),
+// d = distance to the nearest face, s = sigma outside the box and inside_sigma inside it:
+// the box bounds an object that need not be a box (a can's or a bottle's front, a carton's
+// gable top lie inside it), so a point inside costs less than one as far outside. The
+// robust variant caps d at `outlier_distance` (a point that far costs a constant). Evaluated per object: a move
 // of object i recomputes only i's term (CloudLikelihood keeps the per-object sums).
 // With a FreeSpace, each object's term also loses `cost` per cloud ray its box blocks.
 #pragma once
@@ -24,10 +26,13 @@ struct CloudLikelihoodParams {
   double sigma = 0.004;              // m
   bool robust = true;
   double outlier_distance = 0.02;    // m, cap of d in the robust variant
+  double inside_sigma = 0.02;        // m, scale of d for points inside the box
 };
 
 // Distance from p to the surface of the box (0 on a face, > 0 inside and outside).
 double surface_distance(const Obb& box, const Eigen::Vector3d& p);
+// The same with a sign: > 0 outside, < 0 inside.
+double signed_surface_distance(const Obb& box, const Eigen::Vector3d& p);
 
 // Sum over `points` (same frame as the box). An empty point set gives 0.
 double cloud_log_likelihood(const Points& points, const Obb& box, const CloudLikelihoodParams& params = {});

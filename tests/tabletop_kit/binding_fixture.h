@@ -169,7 +169,7 @@ struct Fixture {
     b.priors.push_back(blk::mln());
     b.likelihood = blk::keypoints::gaussian(1.0, V::robust, V::outlier_px, V::estimate_sigma_t, V::estimate_sigma_r,
                                             V::sigma_from_scene);
-    b.likelihood *= blk::cloud::surface(0.004, true, 0.02, 0.0);
+    b.likelihood *= blk::cloud::surface(0.004, true, 0.02, 0.0, 0.02, 0.005);
     if (decisions) b.outputs.push_back(blk::scene::decisions(gen::kPred_falseEst, gen::kPred_hidden));
     b.kernels.push_back({"refine", "refine", blk::Move::perturb, {blk::pose::perturb(0.001, 0.008726646259971648, 20)},
                          "kernel refine(o: object) reverse refine = pose.perturb(...)"});

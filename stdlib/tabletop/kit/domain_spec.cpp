@@ -23,6 +23,7 @@
 #include "stdlib/tabletop/overlay.h"
 #include "stdlib/tabletop/scene_io.h"
 #ifdef KSMC_HAVE_PERCEPTION
+#include "stdlib/tabletop/perception/planar_faces.h"
 #include "stdlib/tabletop/perception/scene_from_cloud.h"
 #include "stdlib/tabletop/perception/scene_json.h"
 #endif
@@ -87,7 +88,7 @@ Scene load_cloud_input(const cli::DomainInput& in, const blocks::Binding& bindin
   std::size_t missing = 0;
   const perception::Points points = perception::load_cloud(file, options.units, &missing);
   if (missing > 0)
-    std::cerr << fmt::format("tabletop: warning: {}: {} points at (0, 0, 0) left out (a depth sensor's missing returns)\n",
+    std::cerr << fmt::format("tabletop: warning: {}: {} missing returns left out (points at (0, 0, 0), or NaN in an organised PCD)\n",
                              file, missing);
   cli::check_work(cloud_estimate(file, points.size(), in), in);  // large clouds: cost up front
   options.stage = [&in](std::string_view what) { cli::stage(in, what); };
@@ -98,6 +99,8 @@ Scene load_cloud_input(const cli::DomainInput& in, const blocks::Binding& bindin
   if (const auto& term = binding.likelihood.cloud) {
     auto seen = std::make_shared<CloudObservation>();
     seen->object_points = std::move(cs.object_points);
+    if (term->voxel > 0.0)  // one point per voxel: the likelihood's independent observations
+      for (perception::Points& own : seen->object_points) own = perception::voxel_subsample(own, term->voxel);
     if (term->free_space_cost > 0.0) {
       cli::stage(in, fmt::format("indexing {} rays for the free-space term", cs.cloud_in_table.size()));
       FreeSpace rays;
@@ -225,8 +228,18 @@ KitSetup make_setup(const blocks::Binding& binding, std::shared_ptr<const Scene>
                        {"outlier_px", binding.likelihood.outlier_px},
                        {"sigma_from_scene", binding.likelihood.sigma_from_scene}});
   if (const auto& c = binding.likelihood.cloud) {
-    likelihood["cloud"] = {{"sigma_m", c->sigma}, {"robust", c->robust}, {"outlier_m", c->outlier},
-                           {"free_space_cost", c->free_space_cost}, {"scene_has_cloud", scene->cloud != nullptr}};
+    likelihood["cloud"] = {{"sigma_m", c->sigma},
+                           {"robust", c->robust},
+                           {"outlier_m", c->outlier},
+                           {"free_space_cost", c->free_space_cost},
+                           {"inside_sigma_m", c->inside_sigma},
+                           {"voxel_m", c->voxel},
+                           {"scene_has_cloud", scene->cloud != nullptr}};
+    if (scene->cloud != nullptr) {
+      std::size_t scored = 0;
+      for (const auto& own : scene->cloud->object_points) scored += own.size();
+      likelihood["cloud"]["points_scored"] = scored;
+    }
   }
   if (binding.likelihood.keypoint_term && binding.likelihood.sigma_from_scene) {  // what this scene is scored with
     const blocks::KeypointGaussian used = scene_likelihood(*scene, binding.likelihood);

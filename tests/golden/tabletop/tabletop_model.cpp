@@ -94,7 +94,7 @@ blk::Binding make_binding() {
   b.extractors.push_back({kPred_table, &extract_table, "extract table(o) = scene.is_table(o);"});
   b.priors.push_back(blk::mln());
   b.likelihood = blk::keypoints::gaussian(1.0, true, 5.0, 0.003, 0.026179938779914945, true);
-  b.likelihood *= blk::cloud::surface(0.004, true, 0.02, 0.0);
+  b.likelihood *= blk::cloud::surface(0.004, true, 0.02, 0.0, 0.02, 0.005);
   b.outputs.push_back(blk::scene::decisions(kPred_falseEst, kPred_hidden));
   b.kernels.push_back({"refine", "refine", blk::Move::perturb, {blk::pose::perturb(/* pose[o] */ 0.001, 0.008726646259971648, 20)}, "kernel refine(o: object) reverse refine = pose.perturb(pose[o], sigma_t = 1 mm, sigma_r = 0.5 deg, candidates = 20);"});
   b.kernels.push_back({"fit", "fit", blk::Move::fit, {blk::pose::fit(/* pose[o] */ 1.0, 2.0)}, "kernel fit(o: object) reverse fit = pose.fit(pose[o], scale = 1, estimate_scale = 2);"});
