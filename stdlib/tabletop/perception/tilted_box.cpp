@@ -252,10 +252,10 @@ std::optional<TiltedFit> fit_tilted_box(const Points& points, const TiltOptions&
   const std::vector<Face> sparse_faces = planar_faces(sparse, probe);
   const bool any_tilted = std::any_of(sparse_faces.begin(), sparse_faces.end(),
                                       [&](const Face& f) { return tilted_seed(sparse, f, o, probe_points); });
-  const bool any_outline = o.leaning_outlines && std::any_of(sparse_faces.begin(), sparse_faces.end(), [&](const Face& f) {
-    return outline_seed(sparse, f, o, probe_points);
-  });
-  if (!any_tilted && !any_outline) return std::nullopt;
+  if (!any_tilted && (!o.leaning_outlines || std::none_of(sparse_faces.begin(), sparse_faces.end(), [&](const Face& f) {
+        return outline_seed(sparse, f, o, probe_points);
+      })))
+    return std::nullopt;
 
   // The tilted faces from the largest, then (with none that gives a box) the vertical faces
   // whose outline leans: the first whose box has its points on its faces.
