@@ -61,44 +61,46 @@ TableFit fit_table(const Points& cloud, const std::string& source, const TableOp
   n /= norm;
   d /= norm;
   // In-plane basis, then the minimal rectangle of the inliers fixes origin and x axis.
-  Eigen::Vector3d e1, e2, origin;
+  const Eigen::Vector3d a = std::abs(n.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  const Eigen::Vector3d e1 = (a - a.dot(n) * n).normalized();
+  Eigen::Vector3d e2 = n.cross(e1);
+  Eigen::Vector3d origin = -d * n;
+  std::vector<Eigen::Vector2d> flat;
+  flat.reserve(inliers.indices.size());
   double ss = 0.0;
-  const auto inlier_rect = [&] {
-    const Eigen::Vector3d a = std::abs(n.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
-    e1 = (a - a.dot(n) * n).normalized();
-    e2 = n.cross(e1);
-    origin = -d * n;
-    std::vector<Eigen::Vector2d> flat;
-    flat.reserve(inliers.indices.size());
-    ss = 0.0;
-    for (int idx : inliers.indices) {
-      const Eigen::Vector3d& p = cloud[static_cast<std::size_t>(idx)];
-      flat.emplace_back((p - origin).dot(e1), (p - origin).dot(e2));
-      const double s = n.dot(p) + d;
-      ss += s * s;
-    }
-    return min_area_rect(flat, options.extent_trim);
-  };
-  Rect2 rect = inlier_rect();
+  for (int idx : inliers.indices) {
+    const Eigen::Vector3d& p = cloud[static_cast<std::size_t>(idx)];
+    flat.emplace_back((p - origin).dot(e1), (p - origin).dot(e2));
+    const double s = n.dot(p) + d;
+    ss += s * s;
+  }
+  Rect2 rect = min_area_rect(flat, options.extent_trim);
 
   // Up is the side with more points within side_band of the plane over the table's own
   // rectangle: the objects. Below the top, within its outline, the sensor sees next to
   // nothing (the top hides it), while beside the table the floor or a wall may outnumber the
   // objects. With no such point, all points within side_band vote; ties point the normal at
   // the cloud origin (the sensor, for camera-frame clouds).
+  const Eigen::Vector3d along_u = rect.u.x() * e1 + rect.u.y() * e2, along_v = rect.v().x() * e1 + rect.v().y() * e2;
+  const Eigen::Vector3d middle = origin + rect.center.x() * e1 + rect.center.y() * e2;
   long over = 0, all = 0;
   for (const auto& p : cloud) {
     const double s = n.dot(p) + d;
     if (std::abs(s) <= options.distance_threshold || std::abs(s) >= options.side_band) continue;
     const int side = s > 0 ? 1 : -1;
     all += side;
-    const Eigen::Vector2d q((p - origin).dot(e1) - rect.center.x(), (p - origin).dot(e2) - rect.center.y());
-    if (std::abs(q.dot(rect.u)) <= rect.half.x() && std::abs(q.dot(rect.v())) <= rect.half.y()) over += side;
+    const Eigen::Vector3d q = p - middle;
+    if (std::abs(q.dot(along_u)) <= rect.half.x() && std::abs(q.dot(along_v)) <= rect.half.y()) over += side;
   }
   const long vote = over != 0 ? over : all;
-  if (vote < 0 || (vote == 0 && d < 0)) {
-    n = -n, d = -d;
-    rect = inlier_rect();
+  if (vote < 0 || (vote == 0 && d < 0)) {  // flipped: e2 turns, the in-plane y coordinates mirror
+    n = -n, d = -d, e2 = -e2;
+    origin = -d * n;
+    rect.center.y() = -rect.center.y();
+    if (rect.u.y() != 0.0) {  // the mirrored first side is the other side of the rectangle, in [0, 90 deg)
+      rect.u = Eigen::Vector2d(rect.u.y(), rect.u.x());
+      rect.half = Eigen::Vector2d(rect.half.y(), rect.half.x());
+    }
   }
   Eigen::Matrix3d r;
   r.col(0) = rect.u.x() * e1 + rect.u.y() * e2;
