@@ -4,8 +4,9 @@
 // d = distance to the nearest face, s = sigma outside the box and inside_sigma inside it:
 // the box bounds an object that need not be a box (a can's or a bottle's front, a carton's
 // gable top lie inside it), so a point inside costs less than one as far outside. The
-// robust variant caps d at `outlier_distance` (a point that far costs a constant). Evaluated per object: a move
-// of object i recomputes only i's term (CloudLikelihood keeps the per-object sums).
+// robust variant caps d at `outlier_distance` (a point that far costs a constant).
+// Evaluated per object: a move of object i recomputes only i's term (CloudLikelihood keeps
+// the per-object sums).
 // With a FreeSpace, each object's term also loses `cost` per cloud ray its box blocks.
 #pragma once
 

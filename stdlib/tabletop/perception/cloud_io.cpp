@@ -467,7 +467,7 @@ std::vector<double> read_pcd(std::string_view bytes, const std::string& file, bo
 }
 }  // namespace
 
-Points load_cloud(const std::filesystem::path& path, Units units, std::size_t* origin_points) {
+Points load_cloud(const std::filesystem::path& path, Units units, std::size_t* missing_returns) {
   const std::string name = path.string();
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
@@ -491,7 +491,7 @@ Points load_cloud(const std::filesystem::path& path, Units units, std::size_t* o
   const double scale = metres_per_unit(units);
   Points out;
   out.reserve(xyz.size() / 3);
-  std::size_t origin = 0;
+  std::size_t missing = 0;
   for (std::size_t i = 0; i < xyz.size() / 3; ++i) {
     const double x = xyz[3 * i], y = xyz[3 * i + 1], z = xyz[3 * i + 2];
     // A missing return: (0, 0, 0) from a depth camera, or a point that is NaN in x, y and z
@@ -500,7 +500,7 @@ Points load_cloud(const std::filesystem::path& path, Units units, std::size_t* o
     const bool no_return = (x == 0.0 && y == 0.0 && z == 0.0) ||
                            (organised && std::isnan(x) && std::isnan(y) && std::isnan(z));
     if (no_return) {
-      ++origin;
+      ++missing;
       continue;
     }
     if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
@@ -511,8 +511,8 @@ Points load_cloud(const std::filesystem::path& path, Units units, std::size_t* o
     out.emplace_back(scale * x, scale * y, scale * z);
   }
   if (out.empty())
-    throw CloudError(fmt::format("{}: empty cloud: all {} points are missing returns (at (0, 0, 0) or NaN)", name, origin));
-  if (origin_points != nullptr) *origin_points = origin;
+    throw CloudError(fmt::format("{}: empty cloud: all {} points are missing returns (at (0, 0, 0) or NaN)", name, missing));
+  if (missing_returns != nullptr) *missing_returns = missing;
   return out;
 }
 

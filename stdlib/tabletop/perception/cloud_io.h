@@ -35,10 +35,10 @@ double metres_per_unit(Units units);
 // unreadable or corrupt (a count or size the bytes cannot hold, a missing x / y / z, a
 // non-number), has no points, or holds a NaN / infinite coordinate (the message gives the
 // index of the first bad point). Missing returns are left out and counted in
-// `*origin_points` when given: points at exactly (0, 0, 0) (a depth sensor's own centre is
+// `*missing_returns` when given: points at exactly (0, 0, 0) (a depth sensor's own centre is
 // never a surface it sees) and, in an organised PCD (HEIGHT > 1), points NaN in all of x,
 // y and z (PCL's convention). A cloud of nothing else has no points.
-Points load_cloud(const std::filesystem::path& path, Units units = Units::m, std::size_t* origin_points = nullptr);
+Points load_cloud(const std::filesystem::path& path, Units units = Units::m, std::size_t* missing_returns = nullptr);
 
 // Deterministic ASCII PLY (x y z, metres, 6 decimals), written atomically.
 void save_ply(const std::filesystem::path& path, const Points& points);
