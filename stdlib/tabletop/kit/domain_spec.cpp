@@ -23,7 +23,7 @@
 #include "stdlib/tabletop/overlay.h"
 #include "stdlib/tabletop/scene_io.h"
 #ifdef KSMC_HAVE_PERCEPTION
-#include "stdlib/tabletop/perception/planar_faces.h"
+#include "stdlib/tabletop/perception/point_grid.h"
 #include "stdlib/tabletop/perception/scene_from_cloud.h"
 #include "stdlib/tabletop/perception/scene_json.h"
 #endif

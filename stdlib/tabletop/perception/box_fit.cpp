@@ -9,6 +9,7 @@
 
 #include "stdlib/tabletop/perception/footprint.h"
 #include "stdlib/tabletop/perception/planar_faces.h"
+#include "stdlib/tabletop/perception/point_grid.h"
 
 namespace ksmc::stdlib::tabletop::perception {
 

@@ -1,7 +1,6 @@
 #include "stdlib/tabletop/perception/planar_faces.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <numeric>
 
@@ -98,22 +97,6 @@ std::vector<Face> planar_faces(const Points& points, const FaceOptions& o) {
     return a.points.size() > b.points.size() || (a.points.size() == b.points.size() && a.points.front() < b.points.front());
   });
   return faces;
-}
-
-Points voxel_subsample(const Points& points, double voxel) {
-  std::vector<std::pair<std::array<long, 3>, std::size_t>> cells;
-  cells.reserve(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
-    cells.push_back({{cell_of(points[i].x(), voxel), cell_of(points[i].y(), voxel), cell_of(points[i].z(), voxel)}, i});
-  std::sort(cells.begin(), cells.end());
-  std::vector<std::size_t> keep;
-  for (std::size_t k = 0; k < cells.size(); ++k)
-    if (k == 0 || cells[k].first != cells[k - 1].first) keep.push_back(cells[k].second);
-  std::sort(keep.begin(), keep.end());
-  Points out;
-  out.reserve(keep.size());
-  for (std::size_t i : keep) out.push_back(points[i]);
-  return out;
 }
 
 }  // namespace ksmc::stdlib::tabletop::perception

@@ -32,8 +32,4 @@ struct Face {
 // Faces of `points`, largest first (ties by first index: deterministic).
 std::vector<Face> planar_faces(const Points& points, const FaceOptions& options = {});
 
-// One point per occupied `voxel` cube (the first in input order): a sparser copy for quick
-// tests.
-Points voxel_subsample(const Points& points, double voxel);
-
 }  // namespace ksmc::stdlib::tabletop::perception

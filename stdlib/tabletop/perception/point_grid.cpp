@@ -1,6 +1,7 @@
 #include "stdlib/tabletop/perception/point_grid.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace ksmc::stdlib::tabletop::perception {
@@ -64,6 +65,22 @@ void PointGrid::within(const Eigen::Vector3d& p, double radius, std::vector<int>
       for (auto it = std::lower_bound(begin, end, std::make_pair(first, -1)); it != end && it->first <= last; ++it)
         if ((points_[static_cast<std::size_t>(it->second)] - p).squaredNorm() <= r2) out.push_back(it->second);
     }
+}
+
+Points voxel_subsample(const Points& points, double voxel) {
+  std::vector<std::pair<std::array<long, 3>, std::size_t>> cells;
+  cells.reserve(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    cells.push_back({{cell_of(points[i].x(), voxel), cell_of(points[i].y(), voxel), cell_of(points[i].z(), voxel)}, i});
+  std::sort(cells.begin(), cells.end());
+  std::vector<std::size_t> keep;
+  for (std::size_t k = 0; k < cells.size(); ++k)
+    if (k == 0 || cells[k].first != cells[k - 1].first) keep.push_back(cells[k].second);
+  std::sort(keep.begin(), keep.end());
+  Points out;
+  out.reserve(keep.size());
+  for (std::size_t i : keep) out.push_back(points[i]);
+  return out;
 }
 
 }  // namespace ksmc::stdlib::tabletop::perception

@@ -35,4 +35,8 @@ class PointGrid {
   [[nodiscard]] std::uint64_t key(long x, long y, long z) const;
 };
 
+// One point per occupied `voxel` cube (the first in input order): a sparser copy for quick
+// tests, and the cloud likelihood's independent observations (`cloud.surface`'s voxel).
+Points voxel_subsample(const Points& points, double voxel);
+
 }  // namespace ksmc::stdlib::tabletop::perception

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "stdlib/tabletop/perception/footprint.h"
+#include "stdlib/tabletop/perception/point_grid.h"
 
 namespace ksmc::stdlib::tabletop::perception {
 
