@@ -4,6 +4,7 @@
 #include "stdlib/tabletop/tilt_noise.h"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
@@ -21,7 +22,11 @@ Scene::Scene(tabletop::Scene input) : input_(std::move(input)) {
   memo_valid_.assign(n, 0);
   for (const auto& o : input_.objects) input_poses_.push_back(o.pose);
   const EvidenceParams defaults;
-  const GapNoise noise = gap_noise(input_, defaults.stable_tol_rad);
+  // A scene whose depth noise is known (the cloud front end's) takes it as is: its poses were
+  // seated on their supporters, so their gaps are 0 and say nothing of the noise.
+  const GapNoise noise = input_.depth_noise > 0.0
+                             ? GapNoise{input_.depth_noise, std::numeric_limits<std::size_t>::max()}
+                             : gap_noise(input_, defaults.stable_tol_rad);
   vertical_tolerance_ = tabletop::vertical_tolerance(noise, 3.0, defaults.intersect_eps, defaults.vertical_contact_eps);
   gap_sigma_ = tabletop::vertical_tolerance(noise, 1.0, 0.0, vertical_tolerance_ / 3.0);
   const TiltNoise tilts = tilt_noise(input_, defaults.stable_tol_rad);

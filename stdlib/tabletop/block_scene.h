@@ -67,10 +67,12 @@ class Scene {
   const KeypointFit& fit(std::int32_t c) const;
 
   // The near-vertical contact / intersect tolerance of this scene [m]: 3 standard deviations
-  // of its resting gaps (gap_noise.h) within [5 mm, 15 mm], from the input poses.
+  // of its resting gaps (gap_noise.h) within [5 mm, 15 mm], from the input poses; or of the
+  // scene's depth noise when known (Scene::depth_noise, the cloud front end's scenes).
   double vertical_tolerance() const noexcept { return vertical_tolerance_; }
   // One standard deviation of the scene's resting gaps [m] (gap_noise.h), from the input
-  // poses; a third of vertical_tolerance() when too few gaps were seen to judge.
+  // poses, or its depth noise when known; a third of vertical_tolerance() when too few gaps
+  // were seen to judge.
   double gap_sigma() const noexcept { return gap_sigma_; }
   // One standard deviation of the scene's resting tilts [rad] (tilt_noise.h), from the input
   // poses; infinite when fewer than 3 objects rest on a face (too few to judge).

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -18,13 +19,56 @@ double signed_surface_distance(const Obb& box, const Eigen::Vector3d& p) {
 
 double surface_distance(const Obb& box, const Eigen::Vector3d& p) { return std::abs(signed_surface_distance(box, p)); }
 
+namespace {
+
+// The face an inside point is not measured to: one that points down (its outward normal
+// within 45 degrees of the table's -z; a box has at most one) with the sensor behind it. That
+// is the face the box stands on, against the table or its supporter: no sensor above sees
+// it. (The other faces the sensor cannot see stay: a can's or a bottle's silhouette lies on
+// its box's side faces, seen edge-on.)
+struct MeasuredFaces {
+  int skip = -1;       // axis of the face left out, -1 for none
+  double side = 0.0;   // +1: the face at +half along it, -1: at -half
+
+  MeasuredFaces() = default;
+  MeasuredFaces(const Obb& box, const Eigen::Vector3d& sensor_local) {
+    constexpr double kDown = 0.7071;  // cos 45 deg
+    for (int k = 0; k < 3; ++k) {
+      const double up = box.axes(2, k);  // the table normal along axis k
+      const double s = up < -kDown ? 1.0 : up > kDown ? -1.0 : 0.0;  // the face pointing down, if any
+      if (s != 0.0 && !(s * sensor_local(k) > box.half(k))) skip = k, side = s;
+    }
+  }
+
+  // Signed distance of a point (box axes, from its centre): outside, to the box; inside,
+  // minus the distance to the nearest face but the one left out (none left out: as
+  // signed_surface_distance).
+  [[nodiscard]] double signed_distance(const Obb& box, const Eigen::Vector3d& local) const {
+    const Eigen::Vector3d excess = local.cwiseAbs() - box.half;
+    const double nearest = excess.maxCoeff();
+    if (nearest > 0.0) return excess.cwiseMax(0.0).norm();
+    if (skip < 0 || box.half(skip) - side * local(skip) > -nearest) return nearest;  // not the face left out
+    double inside = box.half(skip) + side * local(skip);  // the opposite face
+    for (int k = 0; k < 3; ++k)
+      if (k != skip) inside = std::min(inside, -excess(k));
+    return -inside;
+  }
+};
+
+}  // namespace
+
+double signed_seen_surface_distance(const Obb& box, const Eigen::Vector3d& p, const Eigen::Vector3d& sensor) {
+  return MeasuredFaces(box, in_box_axes(box, sensor - box.center)).signed_distance(box, in_box_axes(box, p - box.center));
+}
+
 double cloud_log_likelihood(const Points& points, const Obb& box, const CloudLikelihoodParams& params) {
   const double norm = std::log(0.5 * (params.sigma + params.inside_sigma) * std::sqrt(2.0 * std::numbers::pi));
   const double inv_out = 1.0 / (2.0 * params.sigma * params.sigma);
   const double inv_in = 1.0 / (2.0 * params.inside_sigma * params.inside_sigma);
+  const MeasuredFaces faces = params.sensor ? MeasuredFaces(box, in_box_axes(box, *params.sensor - box.center)) : MeasuredFaces();
   double sum = 0.0;
   for (const auto& p : points) {
-    const double signed_d = signed_surface_distance(box, p);
+    const double signed_d = faces.signed_distance(box, in_box_axes(box, p - box.center));
     const bool outside = signed_d > 0.0;
     double d = std::abs(signed_d);
     if (params.robust) d = std::min(d, params.outlier_distance);

@@ -1,7 +1,9 @@
 // Cloud likelihood (`cloud.surface` of stdlib/tabletop.ksm; the --cloud front end's scenes):
 // each point of an object's cluster is an observation of the box surface,
 //     log p(p | box) = -d(p, surface)^2 / (2 s^2) - log((sigma + inside_sigma) / 2 sqrt(2 pi)),
-// d = distance to the nearest face, s = sigma outside the box and inside_sigma inside it:
+// d = distance to the nearest face (inside the box, when the sensor is known, not to the face
+// the box stands on: the sensor cannot see it), s = sigma outside the box and inside_sigma
+// inside it:
 // the box bounds an object that need not be a box (a can's or a bottle's front, a carton's
 // gable top lie inside it), so a point inside costs less than one as far outside. The
 // robust variant caps d at `outlier_distance` (a point that far costs a constant).
@@ -28,12 +30,21 @@ struct CloudLikelihoodParams {
   bool robust = true;
   double outlier_distance = 0.02;    // m, cap of d in the robust variant
   double inside_sigma = 0.02;        // m, scale of d for points inside the box
+  // The sensor (same frame as the boxes), when known: a point inside a box is then not
+  // measured to the face the box stands on, a face pointing down that the sensor is behind
+  // (it lies on the table or its supporter, and no sensor above sees it). Measured to it, the
+  // points of a mug's or a can's lower front (inside the box, near its bottom; the front end
+  // leaves the lowest 12 mm to the table) pulled the box up off the table.
+  std::optional<Eigen::Vector3d> sensor;
 };
 
 // Distance from p to the surface of the box (0 on a face, > 0 inside and outside).
 double surface_distance(const Obb& box, const Eigen::Vector3d& p);
 // The same with a sign: > 0 outside, < 0 inside.
 double signed_surface_distance(const Obb& box, const Eigen::Vector3d& p);
+// The same, but inside the box to the nearest face other than one pointing down (within
+// 45 degrees) that `sensor` (same frame) is behind: the face the box stands on.
+double signed_seen_surface_distance(const Obb& box, const Eigen::Vector3d& p, const Eigen::Vector3d& sensor);
 
 // Sum over `points` (same frame as the box). An empty point set gives 0.
 double cloud_log_likelihood(const Points& points, const Obb& box, const CloudLikelihoodParams& params = {});
@@ -106,6 +117,7 @@ class RayIndex {
 struct CloudObservation {
   std::vector<Points> object_points;  // per scene object (file order)
   RayIndex rays;                      // empty (no ray) unless the domain prices free space
+  std::optional<Eigen::Vector3d> sensor;  // the cloud's origin, when known
 };
 
 // Incremental evaluation over the objects of a scene (table frame).

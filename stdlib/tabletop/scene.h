@@ -53,6 +53,11 @@ struct Scene {
   TableSlab table;
   std::filesystem::path image;      // optional background image (absolute or cwd-relative), may be empty
   std::vector<SceneObject> objects; // file order; ids unique, never "table"
+  // One standard deviation [m] of the depth noise of the sensor data the poses were read
+  // from (the --cloud front end: its table plane's RMS residual); 0 when not known. When
+  // known, the near-vertical tolerances come from it rather than from the poses' resting
+  // gaps (gap_noise.h), which a front end that seats its boxes makes exactly 0.
+  double depth_noise = 0.0;
   // What the --cloud front end saw (each object's points, the cloud's rays), for the
   // `cloud.surface` likelihood; null for a scene read from scene.json.
   std::shared_ptr<const CloudObservation> cloud;

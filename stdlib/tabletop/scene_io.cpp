@@ -93,6 +93,11 @@ SceneLoad parse_scene(const nlohmann::json& doc, const std::string& source_name,
         r.fail(Reader::index("table.size", static_cast<std::size_t>(i)), "size must be > 0");
   }
 
+  if (const json* noise = r.optional_member(doc, "", "depth_noise")) {
+    s.depth_noise = r.positive(*noise, "depth_noise");
+    if (s.depth_noise > 1.0) r.fail("depth_noise", fmt::format("{} m is not a depth noise (> 1 m)", s.depth_noise));
+  }
+
   if (const json* img = r.optional_member(doc, "", "image")) {
     const std::string rel = r.string(*img, "image");
     if (!rel.empty()) s.image = std::filesystem::path(rel).is_absolute() ? std::filesystem::path(rel) : base_dir / rel;

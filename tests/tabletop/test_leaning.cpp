@@ -153,3 +153,22 @@ TEST_CASE("leaning: propped on a flat box beyond its centre, its foot on the tab
   REQUIRE(blocks::touching(l, 1, 2, kEps));
   CHECK_FALSE(blocks::obb::leaning(l, 1, kTol, kEps));
 }
+
+TEST_CASE("depth noise: a scene that states its sensor's noise takes its tolerances from it", "[geometry]") {
+  // Three boxes seated exactly on the table, as the cloud front end seats them: their gaps
+  // are 0 and say nothing of the noise (tolerance 5 mm, the floor). With the depth noise
+  // stated, the tolerance is 3 sigma within [5 mm, 15 mm] and gap_sigma is sigma.
+  Scene s;
+  for (int i = 0; i < 3; ++i)
+    s.objects.push_back(object("b" + std::to_string(i), Vector3d(0.2 * i, 0, 0.025), Vector3d(0.1, 0.1, 0.05)));
+  CHECK(blocks::Scene(s).vertical_tolerance() == Approx(0.005));
+  CHECK(blocks::Scene(s).gap_sigma() == 0.0);
+  s.depth_noise = 0.0023;
+  CHECK(blocks::Scene(s).vertical_tolerance() == Approx(0.0069));
+  CHECK(blocks::Scene(s).gap_sigma() == Approx(0.0023));
+  s.depth_noise = 0.001;
+  CHECK(blocks::Scene(s).vertical_tolerance() == Approx(0.005));
+  s.depth_noise = 0.01;
+  CHECK(blocks::Scene(s).vertical_tolerance() == Approx(0.015));
+  CHECK(blocks::Scene(s).gap_sigma() == Approx(0.005));  // a third of the tolerance at most
+}

@@ -58,6 +58,7 @@ TEST_CASE("a valid scene is converted to the table frame", "[scene]") {
   REQUIRE(o.keypoints_model.size() == 2);
   CHECK(o.keypoints_image[1].x() == 320.0);
   CHECK(s.objects[1].keypoints_model.empty());
+  CHECK(s.depth_noise == 0.0);  // not given: not known
   // Round trip back to the camera frame.
   CHECK((s.camera_pose(o).t - Eigen::Vector3d(0.0, 0.1, 0.65)).norm() < 1e-12);
 }
@@ -130,6 +131,18 @@ TEST_CASE("scene errors name the file and JSON path", "[scene]") {
   d = valid_doc();
   d["objects"][0]["keypoints"]["model"][0] = {1.0, 2.0};
   CHECK(error_of(d) == "scene.json: objects[0].keypoints.model[0]: expected 3 numbers, got 2");
+}
+
+TEST_CASE("depth_noise: the sensor's noise in metres, when the scene states it", "[scene]") {
+  json d = valid_doc();
+  d["depth_noise"] = 0.0023;
+  CHECK(parse_scene(d, "scene.json", "/data").scene.depth_noise == 0.0023);
+  d["depth_noise"] = 0;
+  CHECK(error_of(d) == "scene.json: depth_noise: must be > 0, got 0");
+  d["depth_noise"] = 2.5;
+  CHECK(error_of(d) == "scene.json: depth_noise: 2.5 m is not a depth noise (> 1 m)");
+  d["depth_noise"] = "2 mm";
+  CHECK(error_of(d) == "scene.json: depth_noise: expected a number, got string");
 }
 
 TEST_CASE("non-unit quaternions are normalised with a warning", "[scene]") {

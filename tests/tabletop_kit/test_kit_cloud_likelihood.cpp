@@ -57,6 +57,7 @@ std::shared_ptr<const tt::Scene> cloud_scene(bool with_cloud) {
     if (tt::see_through_count(s->objects[0].obb(), probe) == 0) rays.points.push_back(p);
   }
   seen->rays = tt::RayIndex(std::move(rays));
+  seen->sensor = Eigen::Vector3d(0.3, -0.4, 0.6);
   s->cloud = std::move(seen);
   return s;
 }
@@ -77,7 +78,8 @@ TEST_CASE("cloud.surface: a box's points score its pose, and make it an object t
   off.t.x() += 0.004;  // one sigma: each point of the two faces across the shift costs 1/2
   const double here = m.object_log_likelihood_at(0, at), there = m.object_log_likelihood_at(0, off);
   CHECK(here == Approx(tt::cloud_log_likelihood(scene->cloud->object_points[0], scene->objects[0].obb(),
-                                                {b.likelihood.cloud->sigma, true, b.likelihood.cloud->outlier})));
+                                                {b.likelihood.cloud->sigma, true, b.likelihood.cloud->outlier,
+                                                 b.likelihood.cloud->inside_sigma, scene->cloud->sensor})));
   CHECK(here - there > 100.0);
   CHECK(m.log_likelihood() == Approx(here));
 
@@ -100,6 +102,7 @@ TEST_CASE("cloud.surface: with a free-space cost, every ray a box blocks costs t
   const std::size_t blocked = scene->cloud->rays.see_through_count(tt::Obb::from_pose(lifted, scene->objects[0].size));
   CHECK(blocked > 20);
   const double surface = tt::cloud_log_likelihood(scene->cloud->object_points[0], tt::Obb::from_pose(lifted, scene->objects[0].size),
-                                                  {b.likelihood.cloud->sigma, true, b.likelihood.cloud->outlier});
+                                                  {b.likelihood.cloud->sigma, true, b.likelihood.cloud->outlier,
+                                                   b.likelihood.cloud->inside_sigma, scene->cloud->sensor});
   CHECK(m.object_log_likelihood_at(0, lifted) == Approx(surface - 2.0 * static_cast<double>(blocked)));
 }

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <random>
 #include <string>
 
 #include "stdlib/tabletop/perception/scene_from_cloud.h"
@@ -83,6 +84,27 @@ TEST_CASE("front end: table frame, two boxes, scene.json round trip", "[percepti
   }
   // Byte-identical output for identical input.
   CHECK(scene_json_text(cs.scene) == scene_json_text(scene_from_points(two_box_scene(), "synthetic").scene));
+}
+
+TEST_CASE("front end: the table plane's RMS is the scene's depth noise, written and read back", "[perception][front_end]") {
+  // A noise-free cloud: under 1 mm (the plane's least-squares refit leans a little toward the
+  // boxes' feet in the inlier band), which keeps the tolerance at its 5 mm floor.
+  CHECK(scene_from_points(two_box_scene(), "synthetic").scene.depth_noise < 0.001);
+  // The same boxes on a table whose points carry 2 mm of depth noise.
+  Points pts;
+  std::mt19937 rng(7);
+  std::normal_distribution<double> noise(0.0, 0.002);
+  Points table;
+  tp::add_table(table, 0.4, 0.3, 0.005);
+  for (Eigen::Vector3d p : table) pts.push_back(p + Eigen::Vector3d(0, 0, noise(rng)));
+  tp::add_box(pts, -0.15, 0.05, 0.3, Eigen::Vector3d(0.12, 0.06, 0.2), 0.005);
+  tp::add_box(pts, 0.12, -0.08, 1.1, Eigen::Vector3d(0.08, 0.08, 0.05), 0.005);
+  const CloudScene cs = scene_from_points(tp::to_sensor(pts, tp::example_sensor_pose()), "noisy");
+  CHECK(cs.scene.depth_noise == Approx(0.002).margin(0.0002));
+  CHECK(cs.scene.depth_noise == Approx(cs.table.noise).margin(0.5e-6));  // to the micrometre
+  const fs::path dir = temp_dir("depth_noise");
+  write_scene_json(dir / "scene.json", cs.scene);
+  CHECK(ksmc::stdlib::tabletop::load_scene(dir / "scene.json").scene.depth_noise == cs.scene.depth_noise);
 }
 
 TEST_CASE("front end: the floor beside the table does not turn the table upside down", "[perception][front_end]") {

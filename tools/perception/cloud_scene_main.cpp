@@ -107,9 +107,9 @@ int main(int argc, char** argv) {
     const pc::CloudScene cs = pc::scene_from_cloud(cloud, options);
     std::filesystem::create_directories(out);
     pc::write_scene_json(out / "scene.json", cs.scene);
-    fmt::print("{}: {} points, table {} inliers (rms {:.1f} mm, {:.2f} x {:.2f} m), {} objects\n", cloud.string(),
-               cs.cloud_points, cs.table.inliers, 1000.0 * cs.table.rms, cs.table.extent.x(), cs.table.extent.y(),
-               cs.scene.objects.size());
+    fmt::print("{}: {} points, table {} inliers (rms {:.1f} mm, depth noise {:.1f} mm, {:.2f} x {:.2f} m), {} objects\n",
+               cloud.string(), cs.cloud_points, cs.table.inliers, 1000.0 * cs.table.rms, 1000.0 * cs.table.noise,
+               cs.table.extent.x(), cs.table.extent.y(), cs.scene.objects.size());
     fmt::print("object point spacing {:.1f} mm, clustering tolerance {:.1f} mm\n", 1000.0 * cs.point_spacing,
                1000.0 * cs.cluster_tolerance);
     for (std::size_t i = 0; i < cs.scene.objects.size(); ++i) {

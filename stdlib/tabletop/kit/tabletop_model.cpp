@@ -98,7 +98,8 @@ double TabletopModel::object_log_likelihood_at(std::size_t object, const Pose& p
   if (const CloudObservation* cloud = cloud_) {  // cloud.surface
     const blocks::CloudSurface& c = *likelihood_.cloud;
     const Obb box = Obb::from_pose(pose, o.size);
-    ll += cloud_log_likelihood(cloud->object_points[object], box, {c.sigma, c.robust, c.outlier, c.inside_sigma});
+    ll += cloud_log_likelihood(cloud->object_points[object], box,
+                               {c.sigma, c.robust, c.outlier, c.inside_sigma, cloud->sensor});
     if (c.free_space_cost > 0.0) ll -= c.free_space_cost * static_cast<double>(cloud->rays.see_through_count(box));
   }
   // The input pose estimate as a measurement (keypoints.gaussian's estimate_sigma_*).

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "runtime/io/cancel.h"
+#include "stdlib/tabletop/perception/own_points.h"
 
 namespace ksmc::stdlib::tabletop::perception {
 
@@ -74,6 +75,9 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
   s.camera = options.camera;
   s.table_in_camera = out.table.table_in_cloud;
   s.table.size = Eigen::Vector3d(out.table.extent.x(), out.table.extent.y(), options.table_thickness);
+  // The depth noise near the objects, as the table plane shows it; to the micrometre, as
+  // scene.json writes it, so that `tabletop DIR/scene.json` derives the same tolerances.
+  s.depth_noise = std::round(out.table.noise * 1e6) / 1e6;
   std::vector<Points> clusters = std::move(out.object_points);
   out.object_points.clear();
   stage(fmt::format("fitting boxes to {} clusters", clusters.size()));
@@ -92,15 +96,11 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
       ++per_cluster[c];
     }
   }
-  // A box's own points: its cluster's, or those within 1 cm of it when the cluster has several.
-  const auto points_of = [&](const UprightBox& b, std::size_t c) {
-    if (per_cluster[c] == 1) return clusters[c];
-    const Obb obb = Obb::from_pose(b.pose, b.size);
-    Points own;
-    for (const auto& p : clusters[c])
-      if (obb.contains(p, 0.01)) own.push_back(p);
-    return own;
-  };
+  // A box's own points (own_points.h); the layers of a stack kept apart by 3 x the depth
+  // noise.
+  OwnPointsOptions owned;
+  owned.layer_margin = 3.0 * out.table.noise;
+  const auto points_of = [&](std::size_t i) { return own_points(boxes, cluster_of, i, clusters[cluster_of[i]], owned); };
   const RayIndex rays(seen);  // the passes below read only the rays toward each box
   SeenUnderOptions under = options.seen_under;
   // A noisier cloud puts the points near a box's edges farther out: the footprint is inset by
@@ -118,7 +118,7 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
   for (std::size_t i = 0; i < boxes.size(); ++i) {  // boxes the sensor saw under are cut
     const std::size_t c = cluster_of[i];
     const std::vector<UprightBox> parts =
-        cut_seen_under(boxes[i], points_of(boxes[i], c), rays, fit.box, fit.stacks.sides, under);
+        cut_seen_under(boxes[i], points_of(i), rays, fit.box, fit.stacks.sides, under);
     if (parts.empty()) continue;
     const auto at = static_cast<std::ptrdiff_t>(i);
     boxes.erase(boxes.begin() + at);
@@ -156,7 +156,7 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
   // A thin box whose points lie on a larger box is a strip of its face (face_strip.h).
   for (std::size_t j = 0; j < boxes.size(); ++j) {
     if (!is_thin(boxes[j], options.face_strip)) continue;
-    const Points own = points_of(boxes[j], cluster_of[j]);
+    const Points own = points_of(j);
     for (std::size_t i = 0; i < boxes.size(); ++i) {
       if (i == j || !is_face_strip(boxes[j], own, boxes[i], options.face_strip)) continue;
       drop_into(j, i);
@@ -171,7 +171,7 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
     o.model = "cluster";
     o.size = boxes[i].size;
     o.pose = boxes[i].pose;
-    out.object_points.push_back(points_of(boxes[i], c));
+    out.object_points.push_back(points_of(i));
     out.cluster_of.push_back(static_cast<int>(c));
     s.objects.push_back(std::move(o));
   }

@@ -37,6 +37,7 @@ std::string scene_json_text(const Scene& s) {
   out += fmt::format(R"(  "table": {{"pose": {}, "size": {}}},)", pose_text(s.table_in_camera), vec3(s.table.size));
   out += "\n";
   if (!s.image.empty()) out += fmt::format("  \"image\": {},\n", json_string(s.image.string()));
+  if (s.depth_noise > 0.0) out += fmt::format("  \"depth_noise\": {:.6f},\n", s.depth_noise);
   out += "  \"objects\": [";
   for (std::size_t i = 0; i < s.objects.size(); ++i) {
     const SceneObject& o = s.objects[i];

@@ -1,6 +1,8 @@
 #include "stdlib/tabletop/perception/table_plane.h"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <fmt/format.h>
 #include <pcl/ModelCoefficients.h>
@@ -68,11 +70,14 @@ TableFit fit_table(const Points& cloud, const std::string& source, const TableOp
   std::vector<Eigen::Vector2d> flat;
   flat.reserve(inliers.indices.size());
   double ss = 0.0;
+  std::vector<double> off;  // |distance to the plane| per inlier
+  off.reserve(inliers.indices.size());
   for (int idx : inliers.indices) {
     const Eigen::Vector3d& p = cloud[static_cast<std::size_t>(idx)];
     flat.emplace_back((p - origin).dot(e1), (p - origin).dot(e2));
     const double s = n.dot(p) + d;
     ss += s * s;
+    off.push_back(std::abs(s));
   }
   Rect2 rect = min_area_rect(flat, options.extent_trim);
 
@@ -112,6 +117,9 @@ TableFit fit_table(const Points& cloud, const std::string& source, const TableOp
   fit.extent = 2.0 * rect.half;
   fit.inliers = inliers.indices.size();
   fit.rms = std::sqrt(ss / static_cast<double>(inliers.indices.size()));
+  const auto mid = off.begin() + static_cast<std::ptrdiff_t>(off.size() / 2);
+  std::nth_element(off.begin(), mid, off.end());
+  fit.noise = 1.4826 * *mid;
   return fit;
 }
 

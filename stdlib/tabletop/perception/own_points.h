@@ -1,0 +1,28 @@
+// The points a box owns in its cluster, for the cloud likelihood and the passes that read a
+// box's points. A cluster with one box gives it all its points. A cluster with several (a
+// stack split, a box cut where the sensor saw under it) gives each box the points within
+// `margin` of it (noise), but not those of another box's layer: with a box of the cluster
+// standing on it, none higher than its top, and with it standing on one, none lower than its
+// bottom (each by `layer_margin`). The split put the boundary there; a bottle's shoulders
+// above its body's box would otherwise pull that box up in the cloud likelihood.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "stdlib/tabletop/perception/box_fit.h"
+
+namespace ksmc::stdlib::tabletop::perception {
+
+struct OwnPointsOptions {
+  double margin = 0.01;        // m around the box
+  double layer_margin = 0.0;   // m above its top / below its bottom (noise; the front end: 3 x table RMS)
+  double stand_gap = 0.01;     // m; a box stands on another when its bottom is this close to the other's top
+};
+
+// The points of `cluster` that boxes[i] owns; `cluster_of[j]` names box j's cluster,
+// `cluster` is boxes[i]'s (table frame).
+Points own_points(const std::vector<UprightBox>& boxes, const std::vector<std::size_t>& cluster_of, std::size_t i,
+                  const Points& cluster, const OwnPointsOptions& options = {});
+
+}  // namespace ksmc::stdlib::tabletop::perception

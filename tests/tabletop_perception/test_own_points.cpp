@@ -1,0 +1,55 @@
+// own_points: the points each box of a cluster owns (the cloud likelihood's observations).
+#include <catch2/catch.hpp>
+
+#include <vector>
+
+#include "stdlib/tabletop/perception/own_points.h"
+
+using namespace ksmc::stdlib::tabletop::perception;
+
+namespace {
+
+UprightBox upright(double cx, double cy, double bottom, const Eigen::Vector3d& size) {
+  UprightBox b;
+  b.pose.t = Eigen::Vector3d(cx, cy, bottom + 0.5 * size.z());
+  b.size = size;
+  return b;
+}
+
+}  // namespace
+
+TEST_CASE("own points: the layers of a stack stay apart, noise within the margin stays", "[perception][own_points]") {
+  // A bottle split into its body (8 x 8 x 15 cm) and its cap (3 x 3 x 3 cm) on it; its
+  // shoulders rise 8 mm above the body's box beside the cap. Noise: a body side point 6 mm
+  // outside the body, a cap point 2 mm above the body's top, a body top point 2 mm under the
+  // cap's bottom; one 5 mm under it is the body's only.
+  const std::vector<UprightBox> boxes = {upright(0, 0, 0, {0.08, 0.08, 0.15}), upright(0, 0, 0.15, {0.03, 0.03, 0.03}),
+                                         upright(0.5, 0, 0, {0.05, 0.05, 0.05})};
+  const std::vector<std::size_t> cluster_of = {0, 0, 1};
+  const Points cluster = {
+      {0.04, 0.0, 0.07},    // body side
+      {0.046, 0.0, 0.07},   // body side, 6 mm out
+      {0.03, 0.03, 0.158},  // shoulder, 8 mm above the body, beside the cap
+      {0.0, 0.0, 0.152},    // cap bottom region, 2 mm above the body's top
+      {0.01, 0.0, 0.18},    // cap top
+      {0.0, 0.01, 0.148},   // body top, 2 mm under the cap
+      {0.0, -0.01, 0.145},  // body top, 5 mm under the cap
+  };
+  OwnPointsOptions options;
+  options.layer_margin = 0.003;
+  const Points body = own_points(boxes, cluster_of, 0, cluster, options);
+  const Points cap = own_points(boxes, cluster_of, 1, cluster, options);
+  // The body: its sides (one 6 mm out, within the 1 cm margin), its top, and the point 2 mm
+  // above its top (within the layer margin); not the shoulder 8 mm up, nor the cap's top.
+  CHECK(body.size() == 5);
+  for (const auto& p : body) CHECK(p.z() <= 0.153);
+  // The cap: its own two points and the one 2 mm under its bottom, not the one 5 mm under.
+  REQUIRE(cap.size() == 3);
+  for (const auto& p : cap) CHECK(p.z() >= 0.1475);
+  // With the layers ignored (a 1 m layer margin) the shoulder is the body's again: it lies
+  // within 1 cm of the body's box.
+  options.layer_margin = 1.0;
+  CHECK(own_points(boxes, cluster_of, 0, cluster, options).size() == 6);
+  // A box alone in its cluster owns all of it.
+  CHECK(own_points(boxes, cluster_of, 2, cluster, options).size() == cluster.size());
+}
