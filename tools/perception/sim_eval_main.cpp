@@ -16,6 +16,7 @@
 #include <iostream>
 #include <numbers>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <fmt/format.h>
@@ -23,6 +24,7 @@
 
 #include "runtime/io/atomic_file.h"
 
+#include "tools/perception/object_range.h"
 #include "tools/perception/visibility.h"
 #include "tools/perception_sim/sim_cloud.h"
 
@@ -120,12 +122,8 @@ int main(int argc, char** argv) {
       else if (a == "--stride") stride = std::stoi(v);
       else if (a == "--visible") min_visible = std::stod(v);
       else if (a == "--dump") dump = v;
-      else if (a == "--objects") {
-        const auto dots = v.find("..");
-        if (dots == std::string::npos) throw std::invalid_argument("--objects wants A..B");
-        lo = std::stoi(v.substr(0, dots));
-        hi = std::stoi(v.substr(dots + 2));
-      } else throw std::invalid_argument("unknown option " + a);
+      else if (a == "--objects") std::tie(lo, hi) = ksmc::tools::perception::parse_object_range(v);
+      else throw std::invalid_argument("unknown option " + a);
     }
     if (scenes < 1 || lo < 1 || hi < lo || stride < 1 || sigma < 0 || missing < 0 || missing >= 1)
       throw std::invalid_argument("values out of range");
