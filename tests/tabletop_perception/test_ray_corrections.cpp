@@ -128,6 +128,33 @@ TEST_CASE("hidden bottom: the counts of rays under a box, and boxes left alone",
   CHECK(grow_hidden_bottoms(disabled, rays, 0.03, off) == 0);
 }
 
+TEST_CASE("hidden bottom: a box over another grows down to that box's top, not to the table",
+          "[perception][hidden_bottom]") {
+  // A box (8 x 8 x 12 cm) resting on a wider low one (14 x 14 x 8 cm), both behind a 17 cm
+  // front box: the sensor sees the upper box from about 14 cm up, and the space under that,
+  // down to the low box's top, is hidden. The upper box grows down to 8 cm, where it rests.
+  FreeSpace seen;
+  seen.sensor = kFront;
+  seen.points = tp::table_view(kFront, {tp::upright_box(0.0, -0.05, 0.0, Eigen::Vector3d(0.2, 0.08, 0.17)),
+                                        tp::upright_box(0.0, 0.10, 0.0, Eigen::Vector3d(0.14, 0.14, 0.08)),
+                                        tp::upright_box(0.0, 0.10, 0.08, Eigen::Vector3d(0.08, 0.08, 0.12))});
+  const RayIndex rays(seen);
+  const auto upright_at = [](double y, double bottom, const Eigen::Vector3d& size) {
+    UprightBox b;
+    b.size = size;
+    b.pose.t = Eigen::Vector3d(0.0, y, bottom + 0.5 * size.z());
+    return b;
+  };
+  std::vector<UprightBox> boxes{upright_at(-0.05, 0.0, Eigen::Vector3d(0.2, 0.08, 0.17)),
+                                upright_at(0.10, 0.0, Eigen::Vector3d(0.14, 0.14, 0.08)),
+                                upright_at(0.10, 0.14, Eigen::Vector3d(0.08, 0.08, 0.06))};  // the part seen
+  CHECK(grow_hidden_bottoms(boxes, rays, 0.03) == 1);
+  CHECK(bottom_height(boxes[2]) == Approx(0.08));
+  CHECK(boxes[2].size.z() == Approx(0.12));
+  CHECK(bottom_height(boxes[1]) == 0.0);  // the others as they were
+  CHECK(boxes[1].size.z() == Approx(0.08));
+}
+
 TEST_CASE("seen under: a book on a smaller box is two boxes", "[perception][seen_under]") {
   const Points cloud = tp::sensor_view(kAside, kBookOnBox);
   const std::vector<Heights> before = heights(run(cloud, true, false));

@@ -4,12 +4,17 @@
 // (the three families of ksmc-perception-sim, the same scenes for the same --seed), runs
 // `PATH --cloud frame.ply` on it (the domain binary: the front end, then the inference), and
 // scores its scene graph against the settled scene. Each box found is named after the true box
-// nearest its centre (within 5 cm, camera frame). Printed per family: the support edges'
-// precision / recall / F1 against the true support relation (an edge to a box not found is
-// missed), and the boxes found that the binary marked false, hidden or left undecided (either
-// probability within 0.4-0.6). The scenes have no false estimate and nothing hidden from the
-// sensor, so every such mark is an error. Exit codes: 0 ok, 1 a run or a file failed, 2 bad
-// arguments, 3 the pooled support-edge F1 is under --min-f1.
+// nearest its centre (within 5 cm, camera frame). Printed per family:
+// - the support edges' precision / recall / F1 against the true support relation (an edge to
+//   a box not found is missed);
+// - hidden: a box found is truly "hidden" when a box it rests on was not found (the sensor
+//   did not see it, or the front end missed it); the binary's hidden marks against that
+//   (right / wrong / left out);
+// - false: a box is truly "false" when it matches no true box (a fragment, a ghost); the
+//   binary's false marks against that;
+// - undecided: boxes with either probability within 0.4-0.6.
+// Exit codes: 0 ok, 1 a run or a file failed, 2 bad arguments, 3 the pooled support-edge F1
+// is under --min-f1.
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -38,12 +43,16 @@ namespace {
 
 struct Tally {
   int scenes = 0, boxes = 0, found = 0, edges_true = 0, edges_found = 0, edges_right = 0;
-  int marked_false = 0, marked_hidden = 0, undecided = 0;
+  int hidden_right = 0, hidden_wrong = 0, hidden_left = 0;  // marks on truly hidden / other boxes, hidden not marked
+  int false_right = 0, false_wrong = 0, false_left = 0;
+  int undecided = 0;
 
   void add(const Tally& t) {
     scenes += t.scenes, boxes += t.boxes, found += t.found, edges_true += t.edges_true;
-    edges_found += t.edges_found, edges_right += t.edges_right, marked_false += t.marked_false;
-    marked_hidden += t.marked_hidden, undecided += t.undecided;
+    edges_found += t.edges_found, edges_right += t.edges_right;
+    hidden_right += t.hidden_right, hidden_wrong += t.hidden_wrong, hidden_left += t.hidden_left;
+    false_right += t.false_right, false_wrong += t.false_wrong, false_left += t.false_left;
+    undecided += t.undecided;
   }
   [[nodiscard]] double precision() const { return edges_found ? double(edges_right) / edges_found : 1.0; }
   [[nodiscard]] double recall() const { return edges_true ? double(edges_right) / edges_true : 1.0; }
@@ -99,15 +108,29 @@ Tally score_frame(const std::string& tabletop, const ps::SimFrame& f, const fs::
   for (const auto& [upper, lower] : f.scene.relations.support)
     truth_edges.emplace(upper, lower == sim::kTableIndex ? -1 : lower);
   t.edges_true = static_cast<int>(truth_edges.size());
+  std::set<std::pair<int, int>> drawn;  // the binary's edges, as true box indices
   for (const auto& e : g.at("support")) {
     const std::string up = e[0].get<std::string>(), low = e[1].get<std::string>();
     ++t.edges_found;
     const auto u = truth_of.find(up);
     const auto l = truth_of.find(low);
     if (u == truth_of.end() || (low != "table" && l == truth_of.end())) continue;
-    const bool right = truth_edges.count({u->second, low == "table" ? -1 : l->second}) > 0;
+    const std::pair<int, int> edge{u->second, low == "table" ? -1 : l->second};
+    drawn.insert(edge);
+    const bool right = truth_edges.count(edge) > 0;
     t.edges_right += right;
     if (verbose && !right) fmt::print("  {}: extra support {} on {}\n", label, up, low);
+  }
+  if (verbose) {
+    std::map<int, std::string> id_of;
+    for (const auto& [id, k] : truth_of) id_of[k] = id;
+    const auto name = [&](int k) {
+      if (k < 0) return std::string("table");
+      const auto it = id_of.find(k);
+      return f.truth[static_cast<std::size_t>(k)].name + (it == id_of.end() ? " (not found)" : " = " + it->second);
+    };
+    for (const auto& edge : truth_edges)
+      if (!drawn.count(edge)) fmt::print("  {}: missed support {} on {}\n", label, name(edge.first), name(edge.second));
   }
   for (const auto& o : objects) {
     const double pf = o.at("false_prob").get<double>(), ph = o.at("hidden_prob").get<double>();
@@ -116,8 +139,17 @@ Tally score_frame(const std::string& tabletop, const ps::SimFrame& f, const fs::
       return v.is_boolean() && v.get<bool>();
     };
     const bool f_mark = marked("false"), h_mark = marked("hidden");
-    t.marked_false += f_mark;
-    t.marked_hidden += h_mark;
+    const std::string id = o.at("id").get<std::string>();
+    const auto match = truth_of.find(id);
+    const bool is_false = match == truth_of.end();
+    bool is_hidden = false;  // a box it rests on was not found
+    if (!is_false)
+      for (const auto& [upper, lower] : truth_edges)
+        is_hidden = is_hidden || (upper == match->second && lower >= 0 && !claimed.count(static_cast<std::size_t>(lower)));
+    if (f_mark) ++(is_false ? t.false_right : t.false_wrong);
+    else if (is_false) ++t.false_left;
+    if (h_mark) ++(is_hidden ? t.hidden_right : t.hidden_wrong);
+    else if (is_hidden) ++t.hidden_left;
     const bool open = (pf >= 0.4 && pf <= 0.6) || (ph >= 0.4 && ph <= 0.6);
     t.undecided += open;
     if (verbose && (f_mark || h_mark || open))
@@ -162,12 +194,14 @@ int main(int argc, char** argv) {
   const fs::path root = work.empty() ? fs::temp_directory_path() / fmt::format("ksmc_cloud_graph_{}", seed) : fs::path(work);
   fmt::print("{} scenes per family, {}..{} boxes, seed {}, {} iterations (chain seed {}), binary {}\n", scenes, lo, hi,
              seed, iterations, chain_seed, tabletop);
-  fmt::print("{:<8} {:>5} {:>5} | {:>5} {:>6} {:>6} {:>6} | {:>6} {:>6} {:>9}\n", "family", "boxes", "found", "edges",
-             "P", "R", "F1", "false", "hidden", "undecided");
+  fmt::print("{:<8} {:>5} {:>5} | {:>5} {:>6} {:>6} {:>6} | {:>23} | {:>22} | {:>9}\n", "family", "boxes", "found",
+             "edges", "P", "R", "F1", "hidden right/wrong/left", "false right/wrong/left", "undecided");
   Tally all;
   const auto row = [](const std::string& name, const Tally& t) {
-    fmt::print("{:<8} {:>5} {:>5} | {:>5} {:>6.3f} {:>6.3f} {:>6.3f} | {:>6} {:>6} {:>9}\n", name, t.boxes, t.found,
-               t.edges_true, t.precision(), t.recall(), t.f1(), t.marked_false, t.marked_hidden, t.undecided);
+    fmt::print("{:<8} {:>5} {:>5} | {:>5} {:>6.3f} {:>6.3f} {:>6.3f} | {:>23} | {:>22} | {:>9}\n", name, t.boxes, t.found,
+               t.edges_true, t.precision(), t.recall(), t.f1(),
+               fmt::format("{} / {} / {}", t.hidden_right, t.hidden_wrong, t.hidden_left),
+               fmt::format("{} / {} / {}", t.false_right, t.false_wrong, t.false_left), t.undecided);
   };
   for (const ps::SimFamily& fam : ps::sim_families(lo, hi)) {
     Tally family;

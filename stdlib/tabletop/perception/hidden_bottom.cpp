@@ -29,13 +29,13 @@ SpaceUnder rays_meeting(const Obb& space, const std::vector<Obb>& own, const Ray
   return out;
 }
 
-SpaceUnder rays_under(const UprightBox& box, const RayIndex& rays, const HiddenBottomOptions& options) {
+SpaceUnder rays_under(const UprightBox& box, const RayIndex& rays, const HiddenBottomOptions& options, double floor) {
   const double bottom = bottom_height(box);
   const Eigen::Vector3d half(0.5 * box.size.x() - options.inset, 0.5 * box.size.y() - options.inset,
-                             0.5 * bottom - options.inset);
+                             0.5 * (bottom - floor) - options.inset);
   if (half.minCoeff() <= 0.0) return {};
   Obb under;
-  under.center = Eigen::Vector3d(box.pose.t.x(), box.pose.t.y(), 0.5 * bottom);
+  under.center = Eigen::Vector3d(box.pose.t.x(), box.pose.t.y(), 0.5 * (bottom + floor));
   under.axes = box.pose.q.toRotationMatrix();
   under.half = half;
   return rays_meeting(under, {Obb::from_pose(box.pose, box.size)}, rays, options.margin);
@@ -60,19 +60,41 @@ int grow_hidden_bottoms(std::vector<UprightBox>& boxes, const RayIndex& rays, do
       }
     return false;
   };
+  // The surface under `box`: the highest top, at most `rest_depth` above its bottom, of the
+  // boxes other than `self` under one of 5 x 5 points spanning its footprint (edges included);
+  // the table (0) when none.
+  const auto floor_under = [&](const UprightBox& box, std::size_t self) {
+    const Eigen::Matrix3d r = box.pose.q.toRotationMatrix();
+    const double bottom = bottom_height(box);
+    double floor = 0.0;
+    for (int i = 0; i < 5; ++i)
+      for (int j = 0; j < 5; ++j) {
+        const Eigen::Vector3d local((i / 4.0 - 0.5) * box.size.x(), (j / 4.0 - 0.5) * box.size.y(), 0.0);
+        const Eigen::Vector3d p = box.pose.t + r * local;
+        for (std::size_t k = 0; k < solid.size(); ++k) {
+          const double top = solid[k].max_z();
+          if (k == self || top > bottom + options.rest_depth || top <= floor) continue;
+          if (solid[k].contains(Eigen::Vector3d(p.x(), p.y(), top - 0.5 * options.rest_depth), 0.5 * options.rest_depth))
+            floor = top;
+        }
+      }
+    return floor;
+  };
   int grown = 0;
   for (std::size_t i = 0; i < boxes.size(); ++i) {
     UprightBox& box = boxes[i];
     if (!is_upright(box)) continue;
     const double bottom = bottom_height(box);
     if (bottom <= float_gap || rests_on_another(box, i)) continue;
-    const SpaceUnder s = rays_under(box, rays, options);
+    const double floor = floor_under(box, i);
+    if (bottom - floor <= float_gap) continue;
+    const SpaceUnder s = rays_under(box, rays, options, floor);
     const std::size_t all = s.before + s.inside + s.through;
     if (s.before < options.min_rays || static_cast<double>(s.before) < options.hidden_share * static_cast<double>(all))
       continue;
     const double top = bottom + box.size.z();
-    box.size.z() = top;
-    box.pose.t.z() = 0.5 * top;
+    box.size.z() = top - floor;
+    box.pose.t.z() = 0.5 * (top + floor);
     ++grown;
   }
   return grown;

@@ -10,7 +10,10 @@
 // The box grows down to the table when the rays toward that space are hidden: at least
 // `min_rays` of them end before it and they are at least `hidden_share` of the three kinds;
 // and when no other box lies under its footprint (within `rest_depth` below its bottom): a
-// box resting on another is hidden underneath by the box it rests on.
+// box resting on another is hidden underneath by the box it rests on. With another box
+// under its footprint farther down, the space is the one between that box's top and its
+// bottom, and the box grows down to that top when the space is hidden: a box lying on a
+// taller one, seen from its top, its sides hidden by its neighbours.
 // The box's own points (inside the fitted box, grown by `margin`) are not counted: a ray to
 // its top continues through the box into the space under it.
 #pragma once
@@ -41,12 +44,15 @@ struct SpaceUnder {
 // than `margin` before it, in it, or passing through it.
 SpaceUnder rays_meeting(const Obb& space, const std::vector<Obb>& own, const RayIndex& rays, double margin);
 
-// How the rays (RayIndex: the cloud and its sensor) meet the space under `box` (an upright box, table frame).
-SpaceUnder rays_under(const UprightBox& box, const RayIndex& rays, const HiddenBottomOptions& options = {});
+// How the rays (RayIndex: the cloud and its sensor) meet the space under `box` (an upright
+// box, table frame), from `floor` (a height) up to its bottom.
+SpaceUnder rays_under(const UprightBox& box, const RayIndex& rays, const HiddenBottomOptions& options = {},
+                      double floor = 0.0);
 
 // Grows each upright box of `boxes` whose bottom is above `float_gap` (the box fit's), that
-// rests on no other box of `boxes` and whose space under it is hidden, down to the table
-// (its top kept). Returns how many grew. Boxes not upright are left alone.
+// rests on no other box of `boxes` and whose space under it is hidden, down to the surface
+// under it (its top kept): the top of the highest other box under its footprint, or the
+// table. Returns how many grew. Boxes not upright are left alone.
 int grow_hidden_bottoms(std::vector<UprightBox>& boxes, const RayIndex& rays, double float_gap,
                         const HiddenBottomOptions& options = {});
 
