@@ -99,7 +99,7 @@ Scene load_cloud_input(const cli::DomainInput& in, const blocks::Binding& bindin
   if (const auto& term = binding.likelihood.cloud) {
     auto seen = std::make_shared<CloudObservation>();
     seen->object_points = std::move(cs.object_points);
-    seen->sensor = cs.sensor_in_table;  // inside a box, points are measured to the faces it saw
+    seen->sensor = cs.sensor_in_table;  // inside a box, no point is measured to the face it stands on
     if (term->voxel > 0.0)  // one point per voxel: the likelihood's independent observations
       for (perception::Points& own : seen->object_points) own = perception::voxel_subsample(own, term->voxel);
     if (term->free_space_cost > 0.0) {

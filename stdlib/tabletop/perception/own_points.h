@@ -16,7 +16,7 @@ namespace ksmc::stdlib::tabletop::perception {
 
 struct OwnPointsOptions {
   double margin = 0.01;        // m around the box
-  double layer_margin = 0.0;   // m above its top / below its bottom (noise; the front end: 3 x table RMS)
+  double layer_margin = 0.0;   // m above its top / below its bottom (noise; the front end: 3 x its depth noise)
   double stand_gap = 0.01;     // m; a box stands on another when its bottom is this close to the other's top
 };
 
