@@ -62,7 +62,12 @@ struct Tally {
   }
 };
 
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
+// A path for the shell, in single quotes (a quote inside is closed, escaped and reopened).
+std::string shell_quoted(const fs::path& p) {
+  std::string out = "'";
+  for (const char c : p.string()) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
 
 // Runs the binary on one frame and scores its scene graph; throws with the reason.
 Tally score_frame(const std::string& tabletop, const ps::SimFrame& f, const fs::path& dir, int iterations,
@@ -70,9 +75,9 @@ Tally score_frame(const std::string& tabletop, const ps::SimFrame& f, const fs::
   fs::create_directories(dir);
   pc::save_ply(dir / "frame.ply", f.cloud);
   const fs::path out = dir / "out";
-  const std::string cmd = fmt::format("{} --cloud {} --out {} --iterations {} --seed {} > {} 2>&1", tabletop,
-                                      quoted(dir / "frame.ply"), quoted(out), iterations, chain_seed,
-                                      quoted(dir / "log.txt"));
+  const std::string cmd =
+      fmt::format("{} --cloud {} --out {} --iterations {} --seed {} > {} 2>&1", shell_quoted(fs::path(tabletop)),
+                  shell_quoted(dir / "frame.ply"), shell_quoted(out), iterations, chain_seed, shell_quoted(dir / "log.txt"));
   if (std::system(cmd.c_str()) != 0)
     throw std::runtime_error(fmt::format("{}: {} failed (see {})", label, tabletop, (dir / "log.txt").string()));
   std::ifstream in(out / "scene_graph.json");
