@@ -1,6 +1,7 @@
 #include "stdlib/tabletop/perception/hidden_bottom.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -46,37 +47,35 @@ int grow_hidden_bottoms(std::vector<UprightBox>& boxes, const RayIndex& rays, do
   if (!options.enabled) return 0;
   std::vector<Obb> solid;
   for (const UprightBox& b : boxes) solid.push_back(Obb::from_pose(b.pose, b.size));
-  // Whether a box other than `self` holds one of 5 x 5 points spanning `box`'s footprint
-  // (edges included) `rest_depth` below its bottom.
-  const auto rests_on_another = [&](const UprightBox& box, std::size_t self) {
+  // 5 x 5 points spanning `box`'s footprint (edges included), `dz` along its axis 2 from its centre.
+  const auto footprint_grid = [](const UprightBox& box, double dz) {
     const Eigen::Matrix3d r = box.pose.q.toRotationMatrix();
+    std::array<Eigen::Vector3d, 25> grid;
     for (int i = 0; i < 5; ++i)
       for (int j = 0; j < 5; ++j) {
-        const Eigen::Vector3d local((i / 4.0 - 0.5) * box.size.x(), (j / 4.0 - 0.5) * box.size.y(),
-                                    -0.5 * box.size.z() - options.rest_depth);
-        const Eigen::Vector3d p = box.pose.t + r * local;
-        for (std::size_t k = 0; k < solid.size(); ++k)
-          if (k != self && solid[k].contains(p, 0.5 * options.rest_depth)) return true;
+        const Eigen::Vector3d local((i / 4.0 - 0.5) * box.size.x(), (j / 4.0 - 0.5) * box.size.y(), dz);
+        grid[static_cast<std::size_t>(5 * i + j)] = box.pose.t + r * local;
       }
+    return grid;
+  };
+  // Whether a box other than `self` holds one of the footprint's points `rest_depth` below its bottom.
+  const auto rests_on_another = [&](const UprightBox& box, std::size_t self) {
+    for (const Eigen::Vector3d& p : footprint_grid(box, -0.5 * box.size.z() - options.rest_depth))
+      for (std::size_t k = 0; k < solid.size(); ++k)
+        if (k != self && solid[k].contains(p, 0.5 * options.rest_depth)) return true;
     return false;
   };
   // The surface under `box`: the highest top, at most `rest_depth` above its bottom, of the
-  // boxes other than `self` under one of 5 x 5 points spanning its footprint (edges included);
-  // the table (0) when none.
+  // boxes other than `self` under one of its footprint's points; the table (0) when none.
   const auto floor_under = [&](const UprightBox& box, std::size_t self) {
-    const Eigen::Matrix3d r = box.pose.q.toRotationMatrix();
     const double bottom = bottom_height(box);
     double floor = 0.0;
-    for (int i = 0; i < 5; ++i)
-      for (int j = 0; j < 5; ++j) {
-        const Eigen::Vector3d local((i / 4.0 - 0.5) * box.size.x(), (j / 4.0 - 0.5) * box.size.y(), 0.0);
-        const Eigen::Vector3d p = box.pose.t + r * local;
-        for (std::size_t k = 0; k < solid.size(); ++k) {
-          const double top = solid[k].max_z();
-          if (k == self || top > bottom + options.rest_depth || top <= floor) continue;
-          if (solid[k].contains(Eigen::Vector3d(p.x(), p.y(), top - 0.5 * options.rest_depth), 0.5 * options.rest_depth))
-            floor = top;
-        }
+    for (const Eigen::Vector3d& p : footprint_grid(box, 0.0))
+      for (std::size_t k = 0; k < solid.size(); ++k) {
+        const double top = solid[k].max_z();
+        if (k == self || top > bottom + options.rest_depth || top <= floor) continue;
+        if (solid[k].contains(Eigen::Vector3d(p.x(), p.y(), top - 0.5 * options.rest_depth), 0.5 * options.rest_depth))
+          floor = top;
       }
     return floor;
   };
