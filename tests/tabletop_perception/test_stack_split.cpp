@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <random>
 
 #include "stdlib/tabletop/perception/stack_split.h"
 #include "synthetic_cloud.h"
@@ -41,6 +42,30 @@ TEST_CASE("stack split: a box on a box gives two boxes with the right heights", 
   CHECK(boxes[1].size.z() == Approx(0.05).margin(0.012));
   CHECK(boxes[1].pose.t.z() - 0.5 * boxes[1].size.z() == Approx(0.06).margin(0.012));
   CHECK(std::max(boxes[1].size.x(), boxes[1].size.y()) == Approx(0.12).margin(0.005));
+}
+
+TEST_CASE("stack split: the upper box rests on the lower box's top, wherever that falls in the bins", "[perception][stack]") {
+  // Plateaus are found in 5 mm bins; with 2 mm of depth noise the top's cells spill into the bin
+  // above, and the bottom used to be set at that bin's centre: up to 7 mm high.
+  std::mt19937 rng(7);
+  std::normal_distribution<double> noise(0.0, 0.002);
+  for (int mm = 61; mm <= 80; ++mm) {
+    const double h = 0.001 * mm + 0.0004;
+    Points pts;
+    add_box(pts, 0.0, 0.0, 0.3, Eigen::Vector3d(0.2, 0.14, h), 0.004);
+    const Eigen::Matrix3d r = Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    pts.erase(std::remove_if(pts.begin(), pts.end(), [&](const Eigen::Vector3d& p) {
+                const Eigen::Vector3d l = r.transpose() * p;
+                return p.z() > h - 0.001 && std::abs(l.x()) < 0.06 && std::abs(l.y()) < 0.04;
+              }), pts.end());
+    add_lifted(pts, 0.0, 0.0, 0.3, Eigen::Vector3d(0.12, 0.08, 0.05), h);
+    for (auto& p : pts) p.z() += noise(rng);
+    const auto boxes = fit_stacked_boxes(pts);
+    INFO("lower box " << 1000.0 * h << " mm high");
+    REQUIRE(boxes.size() == 2);
+    CHECK(boxes[1].pose.t.z() - 0.5 * boxes[1].size.z() == Approx(h).margin(0.0025));
+    CHECK(boxes[1].pose.t.z() + 0.5 * boxes[1].size.z() == Approx(h + 0.05).margin(0.004));
+  }
 }
 
 TEST_CASE("stack split: touching neighbours of different heights both stand on the table", "[perception][stack]") {

@@ -3,7 +3,9 @@
 // Cloud -> scene graph on simulated clouds: renders the depth cloud of each generated scene
 // (the three families of ksmc-perception-sim, the same scenes for the same --seed), runs
 // `PATH --cloud frame.ply` on it (the domain binary: the front end, then the inference), and
-// scores its scene graph against the settled scene. Each box found is named after the true box
+// scores its scene graph against the settled scene. Each scene's folder under --work keeps the
+// frame (frame.ply), the settled boxes (truth.json, obb_world.json's format, camera frame), the
+// binary's log and its output. Each box found is named after the true box
 // nearest its centre (within 5 cm, camera frame). Printed per family:
 // - the support edges' precision / recall / F1 against the true support relation (an edge to
 //   a box not found is missed);
@@ -74,6 +76,19 @@ Tally score_frame(const std::string& tabletop, const ps::SimFrame& f, const fs::
                   int chain_seed, bool verbose, const std::string& label) {
   fs::create_directories(dir);
   pc::save_ply(dir / "frame.ply", f.cloud);
+  {  // the settled boxes beside the frame, camera frame, in obb_world.json's format
+    nlohmann::json truth = {{"frame", "camera (the cloud's frame)"}, {"objects", nlohmann::json::array()}};
+    for (const auto& b : f.truth) {
+      std::vector<double> r;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) r.push_back(b.axes(i, j));
+      truth["objects"].push_back({{"class", b.name},
+                                  {"center_m", {b.centre.x(), b.centre.y(), b.centre.z()}},
+                                  {"R_rowmajor", r},
+                                  {"size_m", {b.size.x(), b.size.y(), b.size.z()}}});
+    }
+    std::ofstream(dir / "truth.json") << truth.dump(1) << "\n";
+  }
   const fs::path out = dir / "out";
   const std::string cmd =
       fmt::format("{} --cloud {} --out {} --iterations {} --seed {} > {} 2>&1", shell_quoted(fs::path(tabletop)),
@@ -157,8 +172,21 @@ Tally score_frame(const std::string& tabletop, const ps::SimFrame& f, const fs::
     else if (is_hidden) ++t.hidden_left;
     const bool open = (pf >= 0.4 && pf <= 0.6) || (ph >= 0.4 && ph <= 0.6);
     t.undecided += open;
-    if (verbose && (f_mark || h_mark || open))
-      fmt::print("  {}: {} false {:.2f} hidden {:.2f}\n", label, o.at("id").get<std::string>(), pf, ph);
+    if (verbose && (f_mark || h_mark || open)) {
+      std::string truth = "no true box";  // what the box is, and what it truly rests on
+      if (!is_false) {
+        const std::size_t k = static_cast<std::size_t>(match->second);
+        std::string on;
+        for (const auto& [upper, lower] : truth_edges)
+          if (upper == match->second)
+            on += (on.empty() ? "" : ", ") +
+                  (lower < 0 ? std::string("table")
+                             : f.truth[static_cast<std::size_t>(lower)].name +
+                                   (claimed.count(static_cast<std::size_t>(lower)) ? "" : " (not found)"));
+        truth = f.truth[k].name + " on " + (on.empty() ? "nothing" : on);
+      }
+      fmt::print("  {}: {} false {:.2f} hidden {:.2f} ({})\n", label, id, pf, ph, truth);
+    }
   }
   return t;
 }

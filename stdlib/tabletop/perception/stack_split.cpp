@@ -13,19 +13,25 @@ namespace {
 
 // Heights of the plateaus (top surfaces), highest first: histogram of cell maxima in
 // level_gap / 4 bins, a level is a peak: three neighbouring bins holding min_level_area
-// and peak_contrast times the four bins around them.
+// and peak_contrast times the four bins around them. The first window from the top that
+// qualifies can be centred a bin above the top itself (noise spills the top's maxima into the
+// bin above), so a level's height is then measured, not binned: the median height of the
+// points near it (within two bins) in cells whose maximum is near it too, i.e. the top face's
+// points, not its cells' maxima (the maximum of a few noisy points lies above the face).
 std::vector<double> plateaus(const Points& points, const StackOptions& o) {
+  const auto cell_of = [&o](const Eigen::Vector3d& p) {
+    return std::make_pair(std::lround(std::floor(p.x() / o.cell)), std::lround(std::floor(p.y() / o.cell)));
+  };
   std::map<std::pair<long, long>, double> top;
   for (const auto& p : points) {
-    const auto key = std::make_pair(std::lround(std::floor(p.x() / o.cell)), std::lround(std::floor(p.y() / o.cell)));
-    auto [it, fresh] = top.emplace(key, p.z());
+    auto [it, fresh] = top.emplace(cell_of(p), p.z());
     if (!fresh) it->second = std::max(it->second, p.z());
   }
   const double bin = 0.25 * o.level_gap;
   std::map<long, int> hist;
   for (const auto& [k, h] : top) ++hist[std::lround(std::floor(h / bin))];
   const int need = static_cast<int>(std::ceil(o.min_level_area / (o.cell * o.cell)));
-  std::vector<double> levels;
+  std::vector<double> levels, binned;  // measured heights; the peaks' bin centres
   for (auto it = hist.rbegin(); it != hist.rend(); ++it) {
     auto at = [&](long k) {
       const auto f = hist.find(k);
@@ -37,8 +43,19 @@ std::vector<double> plateaus(const Points& points, const StackOptions& o) {
     const double h = (static_cast<double>(k) + 0.5) * bin;
     // A flat top is a peak; a tilted face spreads evenly over the bins (count/flank = 3/4).
     if (count < need || count < o.peak_contrast * flank) continue;
-    if (!levels.empty() && levels.back() - h < o.level_gap) continue;
-    levels.push_back(h);
+    if (!levels.empty() && binned.back() - h < o.level_gap) continue;
+    binned.push_back(h);
+    const double lo = (static_cast<double>(k) - 2.0) * bin, hi = (static_cast<double>(k) + 2.0) * bin;
+    std::vector<double> near;
+    for (const auto& p : points) {
+      if (p.z() < lo || p.z() >= hi) continue;
+      const double cell_top = top.at(cell_of(p));
+      if (cell_top >= lo && cell_top < hi) near.push_back(p.z());
+    }
+    // `near` holds at least the points whose cells made the peak, so it is not empty.
+    const auto mid = near.begin() + static_cast<std::ptrdiff_t>(near.size() / 2);
+    std::nth_element(near.begin(), mid, near.end());
+    levels.push_back(*mid);
   }
   return levels;
 }
