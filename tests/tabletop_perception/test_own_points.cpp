@@ -53,3 +53,30 @@ TEST_CASE("own points: the layers of a stack stay apart, noise within the margin
   // A box alone in its cluster owns all of it.
   CHECK(own_points(boxes, cluster_of, 2, cluster, options).size() == cluster.size());
 }
+
+TEST_CASE("own points: a box lying across a strip of another keeps its rim from the strip", "[perception][own_points]") {
+  // The front end found only the front 27 mm of a lower box (its visible side and top edge);
+  // the box lying on it is 12 cm deep, its centre behind the strip. The upper box's front face
+  // starts at the strip's top: points 4 and 8 mm above it are the upper box's, not the strip's
+  // (they would pull the strip up in the cloud likelihood).
+  const std::vector<UprightBox> boxes = {upright(0, 0, 0, {0.24, 0.027, 0.097}),
+                                         upright(0, 0.045, 0.097, {0.22, 0.116, 0.095})};
+  const std::vector<std::size_t> cluster_of = {0, 0};
+  const Points cluster = {
+      {0.05, -0.0135, 0.05},   // the strip's front face
+      {0.05, 0.0, 0.097},      // its top edge
+      {0.05, -0.013, 0.101},   // the upper box's front face, 4 mm up
+      {0.05, -0.013, 0.105},   // and 8 mm up
+      {0.05, -0.013, 0.15},    // and well up
+  };
+  OwnPointsOptions options;
+  options.layer_margin = 0.003;
+  const Points strip = own_points(boxes, cluster_of, 0, cluster, options);
+  REQUIRE(strip.size() == 2);
+  for (const auto& p : strip) CHECK(p.z() <= 0.1);
+  CHECK(own_points(boxes, cluster_of, 1, cluster, options).size() == 4);
+  // Beside it, not over it (the footprints 1 cm apart): the neighbour's points stay the
+  // strip's where they are within its margin.
+  const std::vector<UprightBox> apart = {boxes[0], upright(0, 0.0835, 0.097, {0.22, 0.116, 0.095})};
+  CHECK(own_points(apart, cluster_of, 0, cluster, options).size() == 4);
+}

@@ -99,6 +99,33 @@ TEST_CASE("hidden bottom: a box resting on another keeps its bottom", "[percepti
   CHECK(h[1].bottom == Approx(0.08).margin(0.006));
 }
 
+TEST_CASE("hidden bottom: a box lying on one it overhangs makes the lower box grow up to it", "[perception][hidden_bottom]") {
+  // A 28 x 23 cm box on a 10 x 10 x 14 cm one, centred: from the front, the sensor sees the lower
+  // box's front face only up to about 10.6 cm (the upper box's overhang hides the rest) and
+  // sees under the overhang beside the lower box, so the upper box is not grown down.
+  const std::vector<tp::CastBox> stack{tp::upright_box(0.0, 0.0, 0.0, Eigen::Vector3d(0.10, 0.10, 0.14)),
+                                       tp::upright_box(0.0, 0.0, 0.14, Eigen::Vector3d(0.28, 0.23, 0.06))};
+  const Points cloud = tp::sensor_view(kFront, stack);
+  const std::vector<Heights> before = heights(run(cloud, false, true));
+  REQUIRE(before.size() == 2);
+  CHECK(before[0].top < 0.115);  // the lower box, cut where the overhang hides it
+  const CloudScene cs = run(cloud, true, true);
+  const std::vector<Heights> h = heights(cs);
+  REQUIRE(h.size() == 2);
+  CHECK(h[0].bottom == Approx(0.0).margin(0.003));
+  CHECK(h[0].top == Approx(0.14).margin(0.005));
+  CHECK(h[1].bottom == Approx(0.14).margin(0.005));  // the upper box keeps its bottom
+  CHECK(h[1].top == Approx(0.20).margin(0.005));
+
+  // A 4 cm gap between the two (something hidden holds the upper box), seen from low at the
+  // side, through the gap: the lower box keeps its top.
+  const std::vector<tp::CastBox> gap{tp::upright_box(0.0, 0.0, 0.0, Eigen::Vector3d(0.10, 0.10, 0.10)), stack[1]};
+  const std::vector<Heights> seen = heights(run(tp::sensor_view(Eigen::Vector3d(0.9, 0.0, 0.16), gap), true, true));
+  REQUIRE(seen.size() == 2);
+  CHECK(seen[0].top == Approx(0.10).margin(0.005));
+  CHECK(seen[1].bottom == Approx(0.14).margin(0.005));
+}
+
 TEST_CASE("hidden bottom: the counts of rays under a box, and boxes left alone", "[perception][hidden_bottom]") {
   FreeSpace seen;
   seen.sensor = kFront;

@@ -134,7 +134,10 @@ Tally score_frame(const std::string& tabletop, const ps::SimFrame& f, const fs::
     ++t.edges_found;
     const auto u = truth_of.find(up);
     const auto l = truth_of.find(low);
-    if (u == truth_of.end() || (low != "table" && l == truth_of.end())) continue;
+    if (u == truth_of.end() || (low != "table" && l == truth_of.end())) {
+      if (verbose) fmt::print("  {}: extra support {} on {} (a box with no true box)\n", label, up, low);
+      continue;
+    }
     const std::pair<int, int> edge{u->second, low == "table" ? -1 : l->second};
     drawn.insert(edge);
     const bool right = truth_edges.count(edge) > 0;

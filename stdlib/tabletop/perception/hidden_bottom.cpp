@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "stdlib/tabletop/line_of_sight.h"
 
@@ -66,18 +67,29 @@ int grow_hidden_bottoms(std::vector<UprightBox>& boxes, const RayIndex& rays, do
     return false;
   };
   // The surface under `box`: the highest top, at most `rest_depth` above its bottom, of the
-  // boxes other than `self` under one of its footprint's points; the table (0) when none.
+  // boxes other than `self` under one of its footprint's points, and that box; the table (0,
+  // no box) when none.
+  constexpr std::size_t kTable = std::numeric_limits<std::size_t>::max();
   const auto floor_under = [&](const UprightBox& box, std::size_t self) {
     const double bottom = bottom_height(box);
-    double floor = 0.0;
+    std::pair<double, std::size_t> floor{0.0, kTable};
     for (const Eigen::Vector3d& p : footprint_grid(box, 0.0))
       for (std::size_t k = 0; k < solid.size(); ++k) {
         const double top = solid[k].max_z();
-        if (k == self || top > bottom + options.rest_depth || top <= floor) continue;
+        if (k == self || top > bottom + options.rest_depth || top <= floor.first) continue;
         if (solid[k].contains(Eigen::Vector3d(p.x(), p.y(), top - 0.5 * options.rest_depth), 0.5 * options.rest_depth))
-          floor = top;
+          floor = {top, k};
       }
     return floor;
+  };
+  const auto hidden = [&options](const SpaceUnder& s) {
+    const std::size_t all = s.before + s.inside + s.through;
+    return s.before >= options.min_rays && static_cast<double>(s.before) >= options.hidden_share * static_cast<double>(all);
+  };
+  // `box` spans `lo` to `hi` (heights), its footprint kept.
+  const auto span = [](UprightBox& box, double lo, double hi) {
+    box.size.z() = hi - lo;
+    box.pose.t.z() = 0.5 * (lo + hi);
   };
   int grown = 0;
   for (std::size_t i = 0; i < boxes.size(); ++i) {
@@ -85,15 +97,29 @@ int grow_hidden_bottoms(std::vector<UprightBox>& boxes, const RayIndex& rays, do
     if (!is_upright(box)) continue;
     const double bottom = bottom_height(box);
     if (bottom <= float_gap || rests_on_another(box, i)) continue;
-    const double floor = floor_under(box, i);
+    const auto [floor, under] = floor_under(box, i);
     if (bottom - floor <= float_gap) continue;
-    const SpaceUnder s = rays_under(box, rays, options, floor);
-    const std::size_t all = s.before + s.inside + s.through;
-    if (s.before < options.min_rays || static_cast<double>(s.before) < options.hidden_share * static_cast<double>(all))
+    if (hidden(rays_under(box, rays, options, floor))) {
+      span(box, floor, bottom + box.size.z());
+      solid[i] = Obb::from_pose(box.pose, box.size);
+      ++grown;
       continue;
-    const double top = bottom + box.size.z();
-    box.size.z() = top - floor;
-    box.pose.t.z() = 0.5 * (top + floor);
+    }
+    // The space under the box is not hidden as a whole (seen past the box under it), but the
+    // column over the box under it may be: its top hidden by this box, which lies on it and
+    // overhangs it. Rays that end on this box count as hiding it; the lower box's own do not.
+    if (under == kTable || !is_upright(boxes[under])) continue;
+    UprightBox& lower = boxes[under];
+    Obb column;  // the lower box's footprint (inset, at most to half its width) up to this box's bottom
+    column.axes = lower.pose.q.toRotationMatrix();
+    column.center = Eigen::Vector3d(lower.pose.t.x(), lower.pose.t.y(), 0.5 * (floor + bottom));
+    for (int a = 0; a < 2; ++a)
+      column.half(a) = std::max(0.5 * lower.size(a) - options.inset, 0.25 * lower.size(a));
+    column.half.z() = 0.5 * (bottom - floor) - options.inset;
+    if (column.half.z() <= 0.0) continue;
+    if (!hidden(rays_meeting(column, {solid[under]}, rays, options.margin))) continue;
+    span(lower, bottom_height(lower), bottom);
+    solid[under] = Obb::from_pose(lower.pose, lower.size);
     ++grown;
   }
   return grown;

@@ -16,6 +16,10 @@
 // taller one, seen from its top, its sides hidden by its neighbours.
 // The box's own points (inside the fitted box, grown by `margin`) are not counted: a ray to
 // its top continues through the box into the space under it.
+// The other way round, a box lying on a box it overhangs can hide the lower box's top and
+// upper sides: the lower box is fitted too short and the upper one floats over it. Then the
+// lower box grows up to the upper one's bottom when the column over its footprint is hidden
+// (rays ending on the upper box count as hiding it).
 #pragma once
 
 #include <cstddef>
@@ -52,7 +56,10 @@ SpaceUnder rays_under(const UprightBox& box, const RayIndex& rays, const HiddenB
 // Grows each upright box of `boxes` whose bottom is above `float_gap` (the box fit's), that
 // rests on no other box of `boxes` and whose space under it is hidden, down to the surface
 // under it (its top kept): the top of the highest other box under its footprint, or the
-// table. Returns how many grew. Boxes not upright are left alone.
+// table. When that space is not hidden as a whole but the column over that highest box is
+// (the floating box lies on it and overhangs it, so the sensor saw neither the lower box's
+// top nor its upper sides), the lower box grows up to the floating box's bottom instead.
+// Returns how many grew. Boxes not upright are left alone.
 int grow_hidden_bottoms(std::vector<UprightBox>& boxes, const RayIndex& rays, double float_gap,
                         const HiddenBottomOptions& options = {});
 

@@ -14,10 +14,18 @@ Points own_points(const std::vector<UprightBox>& boxes, const std::vector<std::s
   for (const std::size_t k : cluster_of) in_cluster += k == c ? 1 : 0;
   if (in_cluster == 1) return cluster;
   const Obb box = Obb::from_pose(boxes[i].pose, boxes[i].size);
-  // upper stands on lower: its bottom at lower's top, its centre over lower's footprint.
+  // upper stands on lower: its bottom at lower's top, part of its footprint over lower's (one
+  // of 5 x 5 points spanning it, edges included). Not only its centre: a box lying across the
+  // strip the front end found of a lower box (its visible side) has its centre behind it.
   const auto stands_on = [&](const Obb& upper, const Obb& lower) {
-    return std::abs(upper.min_z() - lower.max_z()) <= options.stand_gap &&
-           lower.contains(Eigen::Vector3d(upper.center.x(), upper.center.y(), lower.max_z()), options.stand_gap);
+    if (std::abs(upper.min_z() - lower.max_z()) > options.stand_gap) return false;
+    for (int a = 0; a < 5; ++a)
+      for (int b = 0; b < 5; ++b) {
+        const Eigen::Vector3d p = upper.center + (a / 2.0 - 1.0) * upper.half.x() * upper.axes.col(0) +
+                                  (b / 2.0 - 1.0) * upper.half.y() * upper.axes.col(1);
+        if (lower.contains(Eigen::Vector3d(p.x(), p.y(), lower.max_z()), options.stand_gap)) return true;
+      }
+    return false;
   };
   double top = std::numeric_limits<double>::infinity(), bottom = -top;
   for (std::size_t j = 0; j < boxes.size(); ++j) {

@@ -4,7 +4,9 @@
 // `margin` of it (noise), but not those of another box's layer: with a box of the cluster
 // standing on it, none higher than its top, and with it standing on one, none lower than its
 // bottom (each by `layer_margin`). The split put the boundary there; a bottle's shoulders
-// above its body's box would otherwise pull that box up in the cloud likelihood.
+// above its body's box would otherwise pull that box up in the cloud likelihood. A box stands
+// on another when its bottom is within `stand_gap` of the other's top and part of its
+// footprint is over the other's.
 #pragma once
 
 #include <cstddef>
