@@ -3,9 +3,11 @@
 
 #include <vector>
 
+#include "stdlib/tabletop/obb.h"
 #include "stdlib/tabletop/perception/own_points.h"
 
 using namespace ksmc::stdlib::tabletop::perception;
+using ksmc::stdlib::tabletop::Obb;
 
 namespace {
 
@@ -79,4 +81,35 @@ TEST_CASE("own points: a box lying across a strip of another keeps its rim from 
   // strip's where they are within its margin.
   const std::vector<UprightBox> apart = {boxes[0], upright(0, 0.0835, 0.097, {0.22, 0.116, 0.095})};
   CHECK(own_points(apart, cluster_of, 0, cluster, options).size() == 4);
+}
+
+TEST_CASE("own points: for the likelihood, a point nearer another box is that box's", "[perception][own_points]") {
+  // A box propped against a lower box's top front edge (tilted 30 degrees about x, its back face
+  // on that edge): points on its face just above the lower box's top lie within 1 cm of
+  // the lower box, and pulled it up in the cloud likelihood.
+  UprightBox leaning;
+  leaning.size = Eigen::Vector3d(0.10, 0.03, 0.12);
+  leaning.pose.q = Eigen::Quaterniond(Eigen::AngleAxisd(-0.5236, Eigen::Vector3d::UnitX()));
+  leaning.pose.t = Eigen::Vector3d(0.0, -0.058, 0.0615);
+  const std::vector<UprightBox> boxes = {upright(0, 0, 0, {0.10, 0.06, 0.08}), leaning};
+  const std::vector<std::size_t> cluster_of = {0, 0};
+  const Obb lean = Obb::from_pose(leaning.pose, leaning.size);
+  Points cluster = {{0.0, -0.03, 0.04}, {0.0, 0.0, 0.08}};  // the lower box's front face and top
+  // The leaning box's back face (local y = +half), along its length: some of it is within 1 cm
+  // of the lower box.
+  for (double s = -0.06; s <= 0.06; s += 0.005)
+    cluster.push_back(lean.center + lean.axes.col(1) * lean.half.y() + lean.axes.col(2) * s);
+  const Obb lower = Obb::from_pose(boxes[0].pose, boxes[0].size);
+  std::size_t near_lower = 0;
+  for (std::size_t k = 2; k < cluster.size(); ++k) near_lower += lower.contains(cluster[k], 0.01);
+  REQUIRE(near_lower >= 3);
+  OwnPointsOptions options;
+  options.layer_margin = 0.003;
+  CHECK(own_points(boxes, cluster_of, 0, cluster, options).size() == 2 + near_lower);
+  options.nearest = true;
+  const Points mine = own_points(boxes, cluster_of, 0, cluster, options);
+  for (const auto& p : mine) CHECK(lower.distance_to(p) <= lean.distance_to(p) + options.layer_margin);
+  CHECK(mine.size() < 2 + near_lower);
+  CHECK(mine.size() >= 2);  // its own face and top stay
+  CHECK(own_points(boxes, cluster_of, 1, cluster, options).size() == cluster.size() - 2);
 }

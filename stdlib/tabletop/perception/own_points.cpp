@@ -28,15 +28,24 @@ Points own_points(const std::vector<UprightBox>& boxes, const std::vector<std::s
     return false;
   };
   double top = std::numeric_limits<double>::infinity(), bottom = -top;
+  std::vector<Obb> others;  // the cluster's other boxes
   for (std::size_t j = 0; j < boxes.size(); ++j) {
     if (j == i || cluster_of[j] != c) continue;
-    const Obb other = Obb::from_pose(boxes[j].pose, boxes[j].size);
+    const Obb& other = others.emplace_back(Obb::from_pose(boxes[j].pose, boxes[j].size));
     if (stands_on(other, box)) top = box.max_z() + options.layer_margin;
     if (stands_on(box, other)) bottom = box.min_z() - options.layer_margin;
   }
+  // Nearer another box by more than the layer margin: that box's point (options.nearest).
+  const auto nearer_another = [&](const Eigen::Vector3d& p) {
+    if (!options.nearest) return false;
+    const double mine = box.distance_to(p) - options.layer_margin;
+    for (const Obb& other : others)
+      if (other.distance_to(p) < mine) return true;
+    return false;
+  };
   Points own;
   for (const auto& p : cluster)
-    if (box.contains(p, options.margin) && p.z() <= top && p.z() >= bottom) own.push_back(p);
+    if (box.contains(p, options.margin) && p.z() <= top && p.z() >= bottom && !nearer_another(p)) own.push_back(p);
   return own;
 }
 

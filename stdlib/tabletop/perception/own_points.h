@@ -20,6 +20,11 @@ struct OwnPointsOptions {
   double margin = 0.01;        // m around the box
   double layer_margin = 0.0;   // m above its top / below its bottom (noise; the front end: 3 x its depth noise)
   double stand_gap = 0.01;     // m; a box stands on another when its bottom is this close to the other's top
+  // A point nearer another box of the cluster by more than `layer_margin` is that box's (a box
+  // leaning on this one, one beside it within the margin). The cloud likelihood's points use
+  // it; the front end's passes that test a box's shape against its points (face strips, cuts
+  // where the sensor saw under) read the points near it whoever owns them.
+  bool nearest = false;
 };
 
 // The points of `cluster` that boxes[i] owns; `cluster_of[j]` names box j's cluster,

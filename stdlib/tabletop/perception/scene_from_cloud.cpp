@@ -164,6 +164,8 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
       break;
     }
   }
+  OwnPointsOptions observed = owned;  // the cloud likelihood's points: each to its nearest box
+  observed.nearest = true;
   for (std::size_t i = 0; i < boxes.size(); ++i) {
     const std::size_t c = cluster_of[i];
     SceneObject o;
@@ -171,7 +173,7 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
     o.model = "cluster";
     o.size = boxes[i].size;
     o.pose = boxes[i].pose;
-    out.object_points.push_back(points_of(i));
+    out.object_points.push_back(own_points(boxes, cluster_of, i, clusters[c], observed));
     out.cluster_of.push_back(static_cast<int>(c));
     s.objects.push_back(std::move(o));
   }
