@@ -127,7 +127,7 @@ TEST_CASE("tilted box: a carton's gable top tilts no box", "[perception][tilted]
   // stays (a real Kinect frame's carton was split into a 30-degree box and three pieces).
   // The sensor sees two sides, as it saw that carton. With one side in view (yaw under about
   // 15 degrees here) the roof and that side are also a slab lying across a shorter box, and
-  // the slope still starts a tilted box (docs/perception.md, "Tilted boxes").
+  // the slope still starts a tilted box (docs/perception.md, the pipeline's "tilted" row).
   const double half = 0.0475, wall = 0.195, ridge = 0.05;
   for (double yaw : {20.0, 45.0, 70.0}) {
     const Eigen::Isometry3d body = posed(yaw * kDeg, 0.0, Eigen::Vector3d(0.0, 0.0, 0.5 * wall));

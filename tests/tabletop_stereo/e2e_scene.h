@@ -1,4 +1,4 @@
-// The end-to-end scene of the stereo and cloud front ends (docs/perception.md, "End to end"):
+// The end-to-end scene of the stereo and cloud front ends (docs/perception_stereo.md, "End to end"):
 //   crate   on the table; its camera-facing side carries a glossy printed picture of the
 //           product `poster` (a database object that is not in the scene);
 //   base    on the table, with `top` stacked on it (a stack);

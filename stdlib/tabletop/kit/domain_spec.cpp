@@ -121,7 +121,7 @@ Scene load_cloud_input(const cli::DomainInput& in, const blocks::Binding& bindin
 }
 
 // --stereo LEFT RIGHT --calib stereo.yaml --db DIR: the stereo front end (seed Alg. 2,
-// docs/perception.md). The objects found, with their keypoints, are written as OUT/scene.json.
+// docs/perception_stereo.md). The objects found, with their keypoints, are written as OUT/scene.json.
 Scene load_stereo_input(const cli::DomainInput& in, std::string& scene_json) {
   const std::vector<std::string> pair = in.flags.words("stereo");
   if (pair.size() != 2) throw cli::UsageError("--stereo: expected LEFT RIGHT (two image files)");
