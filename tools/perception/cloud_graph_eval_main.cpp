@@ -35,6 +35,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "runtime/io/atomic_file.h"
 #include "stdlib/tabletop/perception/cloud_io.h"
 #include "tools/perception/object_range.h"
 #include "tools/perception_sim/sim_cloud.h"
@@ -99,7 +100,7 @@ Tally score_frame(const std::string& tabletop, const ps::SimFrame& f, const fs::
                                   {"R_rowmajor", r},
                                   {"size_m", {b.size.x(), b.size.y(), b.size.z()}}});
     }
-    std::ofstream(dir / "truth.json") << truth.dump(1) << "\n";
+    ksmc::runtime::io::write_file_atomic(dir / "truth.json", truth.dump(1) + "\n");
   }
   const fs::path out = dir / "out";
   const std::string cmd =
@@ -194,7 +195,9 @@ Tally score_frame(const std::string& tabletop, const ps::SimFrame& f, const fs::
     const auto u = truth_of.find(up);
     const auto l = truth_of.find(low);
     if (u == truth_of.end() || (low != "table" && l == truth_of.end())) {
-      if (verbose) fmt::print("  {}: extra support {} on {} (a box with no true box)\n", label, up, low);
+      if (verbose)
+        fmt::print("  {}: extra support {} on {} ({} matches no true box)\n", label, up, low,
+                   u == truth_of.end() ? up : low);
       continue;
     }
     const std::pair<int, int> edge{u->second, low == "table" ? -1 : l->second};
@@ -264,8 +267,12 @@ int main(int argc, char** argv) {
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
-      if (a == "--verbose" || a == "--centre-only") {
-        (a == "--verbose" ? verbose : partial_views) = a == "--verbose";
+      if (a == "--verbose") {
+        verbose = true;
+        continue;
+      }
+      if (a == "--centre-only") {
+        partial_views = false;
         continue;
       }
       if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
