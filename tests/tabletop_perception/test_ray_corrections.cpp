@@ -3,13 +3,15 @@
 // hides is two boxes when the sensor saw under its overhang (seen_under.h); a box the sensor
 // sees under, one resting on another, and boxes standing on the table keep their fits; the two
 // ends of a box with a box across it are one box, two boxes with a seen gap stay two
-// (occluded_gap.h).
+// (occluded_gap.h); a lower box seen only from its front grows under the box on it, a thin
+// board seen beside stays thin (hidden_reach.h).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <vector>
 
 #include "stdlib/tabletop/perception/hidden_bottom.h"
+#include "stdlib/tabletop/perception/hidden_reach.h"
 #include "stdlib/tabletop/perception/occluded_gap.h"
 #include "stdlib/tabletop/perception/scene_from_cloud.h"
 #include "stdlib/tabletop/perception/seen_under.h"
@@ -17,6 +19,7 @@
 
 using namespace ksmc::stdlib::tabletop::perception;
 using ksmc::stdlib::tabletop::FreeSpace;
+using ksmc::stdlib::tabletop::Obb;
 using ksmc::stdlib::tabletop::RayIndex;
 using ksmc::stdlib::tabletop::SceneObject;
 namespace tp = ksmc::tests::perception;
@@ -124,6 +127,45 @@ TEST_CASE("hidden bottom: a box lying on one it overhangs makes the lower box gr
   REQUIRE(seen.size() == 2);
   CHECK(seen[0].top == Approx(0.10).margin(0.005));
   CHECK(seen[1].bottom == Approx(0.14).margin(0.005));
+}
+
+TEST_CASE("hidden reach: a lower box seen only from its front grows under the box on it", "[perception][hidden_reach]") {
+  // A 26 x 26 cm box on a 20 x 16 x 5 cm one, flush at the front: from the front the sensor sees
+  // only the lower box's front face (its top and sides are hidden or edge-on), and the front end
+  // fits a 5 mm strip that the upper box's centre lies 13 cm behind.
+  const std::vector<tp::CastBox> stack{tp::upright_box(0.0, 0.02, 0.0, Eigen::Vector3d(0.20, 0.16, 0.05)),
+                                       tp::upright_box(0.0, 0.07, 0.05, Eigen::Vector3d(0.26, 0.26, 0.04))};
+  const Points cloud = tp::sensor_view(kFront, stack);
+  CloudOptions options;
+  options.hidden_reach.enabled = false;
+  const CloudScene strip = scene_from_points(cloud, "synthetic", options);
+  REQUIRE(strip.scene.objects.size() == 2);
+  const auto depth = [](const CloudScene& cs) {  // the lower box's extent along y, and its back
+    const auto& o = cs.scene.objects[0].obb().min_z() < cs.scene.objects[1].obb().min_z() ? cs.scene.objects[0]
+                                                                                           : cs.scene.objects[1];
+    const Obb b = o.obb();
+    double lo = 1e9, hi = -1e9;
+    for (const auto& v : b.vertices()) lo = std::min(lo, v.y()), hi = std::max(hi, v.y());
+    return std::make_pair(hi - lo, hi);
+  };
+  CHECK(depth(strip).first < 0.02);
+  options.hidden_reach.enabled = true;
+  const CloudScene grown = scene_from_points(cloud, "synthetic", options);
+  REQUIRE(grown.scene.objects.size() == 2);
+  const auto [extent, back] = depth(grown);
+  CHECK(extent > 0.12);           // true 16 cm; it grows until the upper centre (7 cm) is 1 cm inside
+  CHECK(back == Approx(0.08).margin(0.006));
+  CHECK(depth(grown).first <= 0.16 + 0.005);
+
+  // A 2 cm thin board under the same box, seen from low at the side: the sensor saw under the
+  // box beside the board (rays reach the table there), so the board keeps its fit.
+  const std::vector<tp::CastBox> board{tp::upright_box(0.0, -0.05, 0.0, Eigen::Vector3d(0.20, 0.02, 0.05)), stack[1]};
+  const CloudScene side = scene_from_points(tp::sensor_view(Eigen::Vector3d(0.7, -0.6, 0.12), board), "synthetic", {});
+  REQUIRE(side.scene.objects.size() == 2);
+  const auto& low = side.scene.objects[0].obb().max_z() < side.scene.objects[1].obb().max_z() ? side.scene.objects[0]
+                                                                                              : side.scene.objects[1];
+  CHECK(std::min(low.size.x(), low.size.y()) < 0.03);
+  CHECK(std::max(low.size.x(), low.size.y()) == Approx(0.20).margin(0.01));
 }
 
 TEST_CASE("hidden bottom: the counts of rays under a box, and boxes left alone", "[perception][hidden_bottom]") {

@@ -1,6 +1,6 @@
 // ksmc-perception-sim [--scenes N] [--objects A..B] [--seed S] [--sigma M] [--missing R] [--stride K] [--upright]
 //                     [--footprint-only] [--fixed-tolerance] [--isotropic] [--no-shadow-merge] [--whole-faces]
-//                     [--no-side-steps] [--no-hidden-bottom] [--no-seen-under] [--no-occluded-gap]
+//                     [--no-side-steps] [--no-hidden-bottom] [--no-hidden-reach] [--no-seen-under] [--no-occluded-gap]
 //                     [--keep-strips] [--visible V] [--verbose] [--dump DIR]
 // Renders depth clouds of generated scenes (three families), runs the point-cloud front end
 // and prints, per family, how well the boxes are recovered (camera frame, nearest-centre
@@ -89,6 +89,7 @@ int main(int argc, char** argv) {
                              // the edge and filled-rows tests (tilted_box.h)
   bool no_side_steps = false;  // boxes not split where their side faces step: the figures before side_steps.h
   bool no_hidden_bottom = false;  // boxes starting above the table stay there: the figures before hidden_bottom.h
+  bool no_hidden_reach = false;   // a box under one that overhangs it keeps its fit: the figures before hidden_reach.h
   bool keep_strips = false;  // thin boxes on larger ones stay: before face_strip.h
   bool no_occluded_gap = false;  // the two ends of a box something lies across stay two: before occluded_gap.h
   bool no_seen_under = false;  // boxes from the table stay whole where the sensor saw under them: before seen_under.h
@@ -105,6 +106,7 @@ int main(int argc, char** argv) {
                          : a == "--whole-faces"     ? &whole_faces
                          : a == "--no-side-steps"   ? &no_side_steps
                          : a == "--no-hidden-bottom" ? &no_hidden_bottom
+                         : a == "--no-hidden-reach" ? &no_hidden_reach
                          : a == "--no-seen-under"   ? &no_seen_under
                          : a == "--no-occluded-gap" ? &no_occluded_gap
                          : a == "--keep-strips"     ? &keep_strips
@@ -162,6 +164,7 @@ int main(int argc, char** argv) {
         if (no_shadow_merge) opt.shadow.enabled = false;
         if (no_side_steps) opt.fit.stacks.sides.enabled = false;
         if (no_hidden_bottom) opt.hidden_bottom.enabled = false;
+        if (no_hidden_reach) opt.hidden_reach.enabled = false;
         if (no_seen_under) opt.seen_under.enabled = false;
         if (no_occluded_gap) opt.occluded_gap.enabled = false;
         if (keep_strips) opt.face_strip.thin = -1.0;

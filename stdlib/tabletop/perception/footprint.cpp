@@ -24,6 +24,16 @@ void canonicalise(Rect2& r) {
 
 }  // namespace
 
+bool rects_overlap(const Rect2& a, const Rect2& b, double slack) {
+  const Eigen::Vector2d d = b.center - a.center;
+  for (const Eigen::Vector2d& n : {a.u, a.v(), b.u, b.v()}) {
+    const double ra = a.half.x() * std::abs(a.u.dot(n)) + a.half.y() * std::abs(a.v().dot(n));
+    const double rb = b.half.x() * std::abs(b.u.dot(n)) + b.half.y() * std::abs(b.v().dot(n));
+    if (std::abs(d.dot(n)) > ra + rb + 2.0 * slack) return false;
+  }
+  return true;
+}
+
 double quantile(std::vector<double>& values, double q) {
   std::sort(values.begin(), values.end());
   const double pos = q * static_cast<double>(values.size() - 1);

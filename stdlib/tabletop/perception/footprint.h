@@ -19,6 +19,10 @@ struct Rect2 {
   [[nodiscard]] double area() const { return 4.0 * half.x() * half.y(); }
 };
 
+// Whether rectangles a and b overlap, each grown by `slack` (separating axes: the four side
+// directions).
+bool rects_overlap(const Rect2& a, const Rect2& b, double slack = 0.0);
+
 // Quantile q in [0, 1] of `values` (at least one; sorted in place), linear interpolation.
 double quantile(std::vector<double>& values, double q);
 

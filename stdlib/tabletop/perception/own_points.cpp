@@ -14,18 +14,22 @@ Points own_points(const std::vector<UprightBox>& boxes, const std::vector<std::s
   for (const std::size_t k : cluster_of) in_cluster += k == c ? 1 : 0;
   if (in_cluster == 1) return cluster;
   const Obb box = Obb::from_pose(boxes[i].pose, boxes[i].size);
-  // upper stands on lower: its bottom at lower's top, part of its footprint over lower's (one
-  // of 5 x 5 points spanning it, edges included). Not only its centre: a box lying across the
-  // strip the front end found of a lower box (its visible side) has its centre behind it.
-  const auto stands_on = [&](const Obb& upper, const Obb& lower) {
-    if (std::abs(upper.min_z() - lower.max_z()) > options.stand_gap) return false;
-    for (int a = 0; a < 5; ++a)
-      for (int b = 0; b < 5; ++b) {
-        const Eigen::Vector3d p = upper.center + (a / 2.0 - 1.0) * upper.half.x() * upper.axes.col(0) +
-                                  (b / 2.0 - 1.0) * upper.half.y() * upper.axes.col(1);
-        if (lower.contains(Eigen::Vector3d(p.x(), p.y(), lower.max_z()), options.stand_gap)) return true;
+  // upper stands on lower: its bottom at lower's top, their footprints overlapping (one of 5 x 5
+  // points spanning either footprint, edges included, over the other). Not only upper's centre:
+  // a box lying across the strip the front end found of a lower box (its visible side) has its
+  // centre behind it, and a strip can pass between a wide box's points.
+  const auto over = [&](const Obb& a, const Obb& b, double z) {  // a's footprint points over b, at height z
+    for (int i = 0; i < 5; ++i)
+      for (int j = 0; j < 5; ++j) {
+        const Eigen::Vector3d p =
+            a.center + (i / 2.0 - 1.0) * a.half.x() * a.axes.col(0) + (j / 2.0 - 1.0) * a.half.y() * a.axes.col(1);
+        if (b.contains(Eigen::Vector3d(p.x(), p.y(), z), options.stand_gap)) return true;
       }
     return false;
+  };
+  const auto stands_on = [&](const Obb& upper, const Obb& lower) {
+    if (std::abs(upper.min_z() - lower.max_z()) > options.stand_gap) return false;
+    return over(upper, lower, lower.max_z()) || over(lower, upper, upper.min_z());
   };
   double top = std::numeric_limits<double>::infinity(), bottom = -top;
   std::vector<Obb> others;  // the cluster's other boxes

@@ -16,6 +16,7 @@
 #include "stdlib/tabletop/perception/clusters.h"
 #include "stdlib/tabletop/perception/face_strip.h"
 #include "stdlib/tabletop/perception/hidden_bottom.h"
+#include "stdlib/tabletop/perception/hidden_reach.h"
 #include "stdlib/tabletop/perception/occluded_gap.h"
 #include "stdlib/tabletop/perception/seen_under.h"
 #include "stdlib/tabletop/perception/shadow_merge.h"
@@ -36,6 +37,7 @@ struct CloudOptions {
   ClusterBoxOptions fit;     // boxes per cluster: tilted, stacked, upright (cluster_boxes.h)
   SeenUnderOptions seen_under;        // boxes from the table the sensor saw under are cut (seen_under.h)
   HiddenBottomOptions hidden_bottom;  // boxes whose foot is hidden grow down to the table (hidden_bottom.h)
+  HiddenReachOptions hidden_reach;    // a box under one that overhangs it grows where it is hidden (hidden_reach.h)
   OccludedGapOptions occluded_gap;    // the two ends of a box something lies across are one (occluded_gap.h)
   FaceStripOptions face_strip;        // a thin box on a larger one is a strip of its face: dropped (face_strip.h)
   Camera camera{615.0, 615.0, 320.0, 240.0, 640, 480};  // written to scene.json (overlay)
