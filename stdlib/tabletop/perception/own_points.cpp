@@ -19,10 +19,10 @@ Points own_points(const std::vector<UprightBox>& boxes, const std::vector<std::s
   // a box lying across the strip the front end found of a lower box (its visible side) has its
   // centre behind it, and a strip can pass between a wide box's points.
   const auto over = [&](const Obb& a, const Obb& b, double z) {  // a's footprint points over b, at height z
-    for (int i = 0; i < 5; ++i)
-      for (int j = 0; j < 5; ++j) {
+    for (int s = 0; s < 5; ++s)
+      for (int t = 0; t < 5; ++t) {
         const Eigen::Vector3d p =
-            a.center + (i / 2.0 - 1.0) * a.half.x() * a.axes.col(0) + (j / 2.0 - 1.0) * a.half.y() * a.axes.col(1);
+            a.center + (s / 2.0 - 1.0) * a.half.x() * a.axes.col(0) + (t / 2.0 - 1.0) * a.half.y() * a.axes.col(1);
         if (b.contains(Eigen::Vector3d(p.x(), p.y(), z), options.stand_gap)) return true;
       }
     return false;
