@@ -114,9 +114,10 @@ bool overhang(const Scene& s, std::int32_t o, double eps, double margin);
 // or propped box is: it touches, within eps [m] and without intersecting, a surface under it
 // (the table, or a box resting on a face that o is `higher` than), and it touches a different
 // body on the side it would fall to (the side of its centre from its lowest vertex), cutting
-// into it at most as deep as the scene's vertical tolerance (Scene::vertical_tolerance, the
-// pose noise): a wall it leans on, or a lower box its raised end rests on. It reads the bodies
-// o touches, like overhang.
+// into it at most sqrt(2) times as deep as the scene's vertical tolerance
+// (Scene::vertical_tolerance: the pose noise of one estimate; the cut is the difference of two):
+// a wall it leans on, or a lower box its raised end rests on. It reads the bodies o touches,
+// like overhang.
 bool leaning(const Scene& s, std::int32_t o, double tol, double eps);
 // Constant a sits on what it rests on more snugly than b does: the gap between a's lowest
 // point and the top of the nearest body it rests on (the bodies it touches within eps [m]

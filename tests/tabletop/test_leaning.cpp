@@ -82,6 +82,13 @@ TEST_CASE("leaning: the body it leans on may be cut into within the scene's pose
     exact.objects.push_back(object("cube" + std::to_string(i), Vector3d(-0.5, 0.2 * i, 0.05), Vector3d(0.1, 0.1, 0.1)));
   REQUIRE(blocks::Scene(exact).vertical_tolerance() == Approx(0.005));
   CHECK_FALSE(leaning(exact, 2));
+  // The cut is the difference of two estimates, each within the tolerance: up to sqrt(2) x
+  // 5 mm = 7.1 mm. 6 mm leans (it did not with 5 mm allowed: the cloud front end's leaning
+  // boxes cut 4-6 mm into what they lean on); 8 mm does not.
+  exact.objects[1] = board(20.0, 0.006);
+  CHECK(leaning(exact, 2));
+  exact.objects[1] = board(20.0, 0.008);
+  CHECK_FALSE(leaning(exact, 2));
   // The surface under it may not be cut into: the board 2 cm deep in the table.
   Scene sunk;
   SceneObject deep = board(20.0);
