@@ -12,8 +12,14 @@ Points own_points(const std::vector<UprightBox>& boxes, const std::vector<std::s
   const std::size_t c = cluster_of.at(i);
   std::size_t in_cluster = 0;
   for (const std::size_t k : cluster_of) in_cluster += k == c ? 1 : 0;
-  if (in_cluster == 1) return cluster;
   const Obb box = Obb::from_pose(boxes[i].pose, boxes[i].size);
+  if (in_cluster == 1) {
+    if (!options.not_below) return cluster;
+    Points own;
+    for (const auto& p : cluster)
+      if (p.z() >= box.min_z() - options.layer_margin) own.push_back(p);
+    return own;
+  }
   // upper stands on lower: its bottom at lower's top, their footprints overlapping (one of 5 x 5
   // points spanning either footprint, edges included, over the other). Not only upper's centre:
   // a box lying across the strip the front end found of a lower box (its visible side) has its
@@ -39,6 +45,7 @@ Points own_points(const std::vector<UprightBox>& boxes, const std::vector<std::s
     if (stands_on(other, box)) top = box.max_z() + options.layer_margin;
     if (stands_on(box, other)) bottom = box.min_z() - options.layer_margin;
   }
+  if (options.not_below) bottom = box.min_z() - options.layer_margin;
   // Nearer another box by more than the layer margin: that box's point (options.nearest).
   const auto nearer_another = [&](const Eigen::Vector3d& p) {
     if (!options.nearest) return false;

@@ -25,6 +25,13 @@ struct OwnPointsOptions {
   // it; the front end's passes that test a box's shape against its points (face strips, cuts
   // where the sensor saw under) read the points near it whoever owns them.
   bool nearest = false;
+  // A point lower than the box's bottom by more than `layer_margin` is not its own, even when
+  // the box is its cluster's only one: it is seen on something under the box that the front
+  // end made no box of (the visible rim or side of a box it hides). Its own surface ends at its
+  // bottom; in the cloud likelihood such points would tilt the box down towards them, and a
+  // box hovering at a slant reads as a false estimate, not as one resting on a hidden object.
+  // The cloud likelihood's points use it, like `nearest`.
+  bool not_below = false;
 };
 
 // The points of `cluster` that boxes[i] owns; `cluster_of[j]` names box j's cluster,
