@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "stdlib/tabletop/perception/hidden_bottom.h"
@@ -195,6 +196,40 @@ TEST_CASE("hidden bottom: the counts of rays under a box, and boxes left alone",
   off.enabled = false;
   std::vector<UprightBox> disabled{box};
   CHECK(grow_hidden_bottoms(disabled, rays, 0.03, off) == 0);
+}
+
+TEST_CASE("hidden bottom: a box leaning on one seen from its shoulder up holds nothing", "[perception][hidden_bottom]") {
+  // The carton of the cases above, seen from 9 cm up behind the front box, and a board (2 x 6 x
+  // 10 cm, tilted 20 degrees) leaning on its side: the board's upper edge reaches 2 mm under
+  // the edge of the carton's footprint, 1.2 cm below its bottom. The carton does not rest on
+  // it: it still grows down to the table (it stayed at 9 cm, and was called hidden).
+  FreeSpace seen;
+  seen.sensor = kFront;
+  seen.points = tp::table_view(kFront, {tp::upright_box(0.0, -0.05, 0.0, Eigen::Vector3d(0.2, 0.08, 0.12)),
+                                        tp::upright_box(0.0, 0.10, 0.0, Eigen::Vector3d(0.08, 0.08, 0.25))});
+  const RayIndex rays(seen);
+  UprightBox carton;
+  carton.size = Eigen::Vector3d(0.08, 0.08, 0.16);
+  carton.pose.t = Eigen::Vector3d(0.0, 0.10, 0.09 + 0.08);
+  const double a = 20.0 * 3.14159265358979323846 / 180.0;
+  UprightBox board;
+  board.size = Eigen::Vector3d(0.02, 0.06, 0.10);
+  board.pose.q = Eigen::Quaterniond(Eigen::AngleAxisd(a, Eigen::Vector3d::UnitY()));
+  const Eigen::Vector3d corner(0.01 * std::cos(a) + 0.05 * std::sin(a), 0.0, -0.01 * std::sin(a) + 0.05 * std::cos(a));
+  board.pose.t = Eigen::Vector3d(-0.038, 0.10, 0.078) - corner;  // its upper +x edge there
+  REQUIRE_FALSE(is_upright(board));
+  REQUIRE(Obb::from_pose(board.pose, board.size).contains(Eigen::Vector3d(-0.04, 0.10, 0.075), 0.0075));
+  std::vector<UprightBox> boxes{carton, board};
+  CHECK(grow_hidden_bottoms(boxes, rays, 0.03) == 1);
+  CHECK(bottom_height(boxes[0]) == Approx(0.0).margin(1e-9));
+  CHECK(boxes[0].size.z() == Approx(0.25));
+  // An upright box there instead holds it: the carton rests on it and keeps its bottom.
+  UprightBox block;
+  block.size = Eigen::Vector3d(0.02, 0.06, 0.078);
+  block.pose.t = Eigen::Vector3d(-0.048, 0.10, 0.039);
+  std::vector<UprightBox> held{carton, block};
+  CHECK(grow_hidden_bottoms(held, rays, 0.03) == 0);
+  CHECK(bottom_height(held[0]) == Approx(0.09));
 }
 
 TEST_CASE("hidden bottom: a box over another grows down to that box's top, not to the table",

@@ -59,11 +59,16 @@ int grow_hidden_bottoms(std::vector<UprightBox>& boxes, const RayIndex& rays, do
       }
     return grid;
   };
+  // Only an upright box holds another: a box leaning on this one's side reaches under the
+  // edge of its footprint and holds nothing (a box seen as its top, a leaning box's upper edge
+  // against its side, was left floating and called hidden).
+  std::vector<bool> holds(boxes.size());
+  for (std::size_t k = 0; k < boxes.size(); ++k) holds[k] = is_upright(boxes[k]);
   // Whether a box other than `self` holds one of the footprint's points `rest_depth` below its bottom.
   const auto rests_on_another = [&](const UprightBox& box, std::size_t self) {
     for (const Eigen::Vector3d& p : footprint_grid(box, -0.5 * box.size.z() - options.rest_depth))
       for (std::size_t k = 0; k < solid.size(); ++k)
-        if (k != self && solid[k].contains(p, 0.5 * options.rest_depth)) return true;
+        if (k != self && holds[k] && solid[k].contains(p, 0.5 * options.rest_depth)) return true;
     return false;
   };
   // The surface under `box`: the highest top, at most `rest_depth` above its bottom, of the
@@ -76,7 +81,7 @@ int grow_hidden_bottoms(std::vector<UprightBox>& boxes, const RayIndex& rays, do
     for (const Eigen::Vector3d& p : footprint_grid(box, 0.0))
       for (std::size_t k = 0; k < solid.size(); ++k) {
         const double top = solid[k].max_z();
-        if (k == self || top > bottom + options.rest_depth || top <= floor.first) continue;
+        if (k == self || !holds[k] || top > bottom + options.rest_depth || top <= floor.first) continue;
         if (solid[k].contains(Eigen::Vector3d(p.x(), p.y(), top - 0.5 * options.rest_depth), 0.5 * options.rest_depth))
           floor = {top, k};
       }
