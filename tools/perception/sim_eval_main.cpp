@@ -1,6 +1,6 @@
 // ksmc-perception-sim [--scenes N] [--objects A..B] [--seed S] [--sigma M] [--missing R] [--stride K] [--upright]
 //                     [--footprint-only] [--fixed-tolerance] [--isotropic] [--no-shadow-merge] [--whole-faces]
-//                     [--no-side-steps] [--no-hidden-bottom] [--no-hidden-reach] [--no-seen-under] [--no-occluded-gap]
+//                     [--no-side-steps] [--no-hidden-bottom] [--no-hidden-reach] [--no-lean-seat] [--no-seen-under] [--no-occluded-gap]
 //                     [--keep-strips] [--visible V] [--verbose] [--dump DIR]
 // Renders depth clouds of generated scenes (three families), runs the point-cloud front end
 // and prints, per family, how well the boxes are recovered (camera frame, nearest-centre
@@ -90,6 +90,7 @@ int main(int argc, char** argv) {
   bool no_side_steps = false;  // boxes not split where their side faces step: the figures before side_steps.h
   bool no_hidden_bottom = false;  // boxes starting above the table stay there: the figures before hidden_bottom.h
   bool no_hidden_reach = false;   // a box under one that overhangs it keeps its fit: the figures before hidden_reach.h
+  bool no_lean_seat = false;      // a tilted box cutting into an upright one keeps its fit: the figures before lean_seat.h
   bool keep_strips = false;  // thin boxes on larger ones stay: before face_strip.h
   bool no_occluded_gap = false;  // the two ends of a box something lies across stay two: before occluded_gap.h
   bool no_seen_under = false;  // boxes from the table stay whole where the sensor saw under them: before seen_under.h
@@ -107,6 +108,7 @@ int main(int argc, char** argv) {
                          : a == "--no-side-steps"   ? &no_side_steps
                          : a == "--no-hidden-bottom" ? &no_hidden_bottom
                          : a == "--no-hidden-reach" ? &no_hidden_reach
+                         : a == "--no-lean-seat"    ? &no_lean_seat
                          : a == "--no-seen-under"   ? &no_seen_under
                          : a == "--no-occluded-gap" ? &no_occluded_gap
                          : a == "--keep-strips"     ? &keep_strips
@@ -165,6 +167,7 @@ int main(int argc, char** argv) {
         if (no_side_steps) opt.fit.stacks.sides.enabled = false;
         if (no_hidden_bottom) opt.hidden_bottom.enabled = false;
         if (no_hidden_reach) opt.hidden_reach.enabled = false;
+        if (no_lean_seat) opt.lean_seat.enabled = false;
         if (no_seen_under) opt.seen_under.enabled = false;
         if (no_occluded_gap) opt.occluded_gap.enabled = false;
         if (keep_strips) opt.face_strip.thin = -1.0;

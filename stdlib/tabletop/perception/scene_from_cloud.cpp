@@ -167,8 +167,14 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
       break;
     }
   }
+  {  // a tilted box does not cut into the upright box it leans on (lean_seat.h)
+    std::vector<Points> own;
+    for (std::size_t i = 0; i < boxes.size(); ++i) own.push_back(points_of(i));
+    seat_leaning_boxes(boxes, own, options.lean_seat);
+  }
   OwnPointsOptions observed = owned;  // the cloud likelihood's points: each to its nearest box
   observed.nearest = true;
+  observed.not_below = true;  // ... and none seen under it (a box it hides)
   for (std::size_t i = 0; i < boxes.size(); ++i) {
     const std::size_t c = cluster_of[i];
     SceneObject o;

@@ -17,6 +17,7 @@
 #include "stdlib/tabletop/perception/face_strip.h"
 #include "stdlib/tabletop/perception/hidden_bottom.h"
 #include "stdlib/tabletop/perception/hidden_reach.h"
+#include "stdlib/tabletop/perception/lean_seat.h"
 #include "stdlib/tabletop/perception/occluded_gap.h"
 #include "stdlib/tabletop/perception/seen_under.h"
 #include "stdlib/tabletop/perception/shadow_merge.h"
@@ -40,6 +41,7 @@ struct CloudOptions {
   HiddenReachOptions hidden_reach;    // a box under one that overhangs it grows where it is hidden (hidden_reach.h)
   OccludedGapOptions occluded_gap;    // the two ends of a box something lies across are one (occluded_gap.h)
   FaceStripOptions face_strip;        // a thin box on a larger one is a strip of its face: dropped (face_strip.h)
+  LeanSeatOptions lean_seat;          // a tilted box cutting into an upright one is cut back where unseen (lean_seat.h)
   Camera camera{615.0, 615.0, 320.0, 240.0, 640, 480};  // written to scene.json (overlay)
   double table_thickness = 0.05;                        // m, the slab below z = 0
   std::string id_prefix = "obj_";
