@@ -62,14 +62,14 @@ TEST_CASE("leaning: not without the body it leans on, nor when cutting into it",
   CHECK_FALSE(leaning(apart, 2));
 
   Scene cut;
-  cut.objects = {wall(), board(20.0, 0.02)};  // 2 cm into the wall
+  cut.objects = {wall(), board(20.0, 0.025)};  // 2.5 cm into the wall: past sqrt(2) x the 15 mm fallback
   CHECK_FALSE(leaning(cut, 2));
 }
 
 TEST_CASE("leaning: the body it leans on may be cut into within the scene's pose noise", "[geometry]") {
   // Pose noise puts a leaning box's estimate on either side of the face it leans on. With
   // fewer than 3 resting gaps the scene's vertical tolerance is the stdlib's 15 mm: a board
-  // 1 cm into the wall leans; 2 cm into it (above) does not.
+  // 1 cm into the wall leans; 2.5 cm into it (above, past sqrt(2) x 15 mm) does not.
   Scene noisy;
   noisy.objects = {wall(), board(20.0, 0.01)};
   REQUIRE(blocks::Scene(noisy).vertical_tolerance() == Approx(0.015));
