@@ -165,7 +165,7 @@ bool leaning(const Scene& s, std::int32_t o, double tol, double eps) {
     // noise of two estimates reaches: pose noise puts a leaning box's estimate on either side
     // of the face it leans on, and that face's own estimate too. Each is within the scene's
     // tolerance (Scene::vertical_tolerance, 3 sigma), so their difference within sqrt(2) times
-    // it (the cloud front end's leaning boxes cut 4-6 mm into what they lean on, 5 mm allowed).
+    // it (the cloud front end's well-fitted leaning boxes cut 4-8 mm into what they lean on).
     const PairGeometry& g = s.pair(o, b, kDefaults.max_contact_eps());
     const bool cut_into = intersect_from_geometry(g, cut);
     const bool within_noise = !g.contained && g.depth <= std::sqrt(2.0) * s.vertical_tolerance();

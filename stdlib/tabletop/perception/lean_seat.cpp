@@ -1,6 +1,6 @@
 #include "stdlib/tabletop/perception/lean_seat.h"
 
-#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>

@@ -1,6 +1,7 @@
 // The points a box owns in its cluster, for the cloud likelihood and the passes that read a
-// box's points. A cluster with one box gives it all its points. A cluster with several (a
-// stack split, a box cut where the sensor saw under it) gives each box the points within
+// box's points. A cluster with one box gives it all its points (for the likelihood, with
+// `not_below`, none under its bottom). A cluster with several (a stack split, a box cut
+// where the sensor saw under it) gives each box the points within
 // `margin` of it (noise), but not those of another box's layer: with a box of the cluster
 // standing on it, none higher than its top, and with it standing on one, none lower than its
 // bottom (each by `layer_margin`). The split put the boundary there; a bottle's shoulders
