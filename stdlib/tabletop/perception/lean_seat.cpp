@@ -34,15 +34,17 @@ double overlap(const UprightBox& a, const Obb& b) {
 int seat_leaning_boxes(std::vector<UprightBox>& boxes, const std::vector<Points>& own, const LeanSeatOptions& options) {
   if (!options.enabled) return 0;
   int cuts = 0;
+  std::vector<Obb> solid;
+  for (const UprightBox& b : boxes) solid.push_back(Obb::from_pose(b.pose, b.size));
   for (std::size_t i = 0; i < boxes.size(); ++i) {
     if (is_upright(boxes[i])) continue;
     // The faces the sensor saw: points of the box's own on each face, not on another box.
-    const Obb fit = Obb::from_pose(boxes[i].pose, boxes[i].size);
+    const Obb fit = solid[i];
     std::array<std::array<std::size_t, 2>, 3> seen{};
     for (const Eigen::Vector3d& p : own.at(i)) {
       bool elsewhere = false;
       for (std::size_t j = 0; j < boxes.size() && !elsewhere; ++j)
-        elsewhere = j != i && Obb::from_pose(boxes[j].pose, boxes[j].size).contains(p, options.seen_margin);
+        elsewhere = j != i && solid[j].contains(p, options.seen_margin);
       if (elsewhere) continue;
       const Eigen::Vector3d l = fit.axes.transpose() * (p - fit.center);
       for (int k = 0; k < 3; ++k) {
@@ -55,7 +57,7 @@ int seat_leaning_boxes(std::vector<UprightBox>& boxes, const std::vector<Points>
     }
     for (std::size_t j = 0; j < boxes.size(); ++j) {
       if (j == i || !is_upright(boxes[j])) continue;
-      const Obb upright = Obb::from_pose(boxes[j].pose, boxes[j].size);
+      const Obb& upright = solid[j];
       if (overlap(boxes[i], upright) <= options.min_depth) continue;
       std::optional<UprightBox> best;
       double least = std::numeric_limits<double>::infinity();
@@ -74,6 +76,7 @@ int seat_leaning_boxes(std::vector<UprightBox>& boxes, const std::vector<Points>
         }
       if (best) {
         boxes[i] = *best;
+        solid[i] = Obb::from_pose(best->pose, best->size);
         ++cuts;
       }
     }

@@ -29,7 +29,7 @@ struct LeanSeatOptions {
 };
 
 // Cuts back the tilted boxes of `boxes` (table frame) that overlap an upright box; `own[i]`
-// are box i's points. Returns how many faces were cut.
+// are box i's points (only the tilted boxes' are read). Returns how many faces were cut.
 int seat_leaning_boxes(std::vector<UprightBox>& boxes, const std::vector<Points>& own,
                        const LeanSeatOptions& options = {});
 

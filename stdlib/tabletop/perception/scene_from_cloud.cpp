@@ -168,8 +168,9 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
     }
   }
   {  // a tilted box does not cut into the upright box it leans on (lean_seat.h)
-    std::vector<Points> own;
-    for (std::size_t i = 0; i < boxes.size(); ++i) own.push_back(points_of(i));
+    std::vector<Points> own(boxes.size());  // only a tilted box's points are read
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+      if (!is_upright(boxes[i])) own[i] = points_of(i);
     seat_leaning_boxes(boxes, own, options.lean_seat);
   }
   OwnPointsOptions observed = owned;  // the cloud likelihood's points: each to its nearest box
