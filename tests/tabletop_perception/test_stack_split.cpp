@@ -151,3 +151,37 @@ TEST_CASE("stack split: the lower box keeps its side faces under a resting box t
   REQUIRE(cut.size() == 2);
   CHECK(std::max(cut[0].size.x(), cut[0].size.y()) < 0.15);
 }
+
+TEST_CASE("stack split: two tall boxes either side of a low one are three boxes on the table", "[perception][stack]") {
+  // Their tops are both above the low box's plateau, with its top seen between them: one box
+  // spanning both tops, resting on the low one, was the fit before top_parts.h.
+  Points pts;
+  add_box(pts, -0.066, 0.0, 0.0, Eigen::Vector3d(0.08, 0.05, 0.06), 0.004);
+  add_box(pts, 0.0, 0.0, 0.0, Eigen::Vector3d(0.05, 0.1, 0.034), 0.004);
+  add_box(pts, 0.066, 0.0, 0.0, Eigen::Vector3d(0.08, 0.05, 0.062), 0.004);
+  const auto check = [](std::vector<UprightBox> boxes) {
+    REQUIRE(boxes.size() == 3);
+    std::sort(boxes.begin(), boxes.end(), [](const UprightBox& a, const UprightBox& b) { return a.pose.t.x() < b.pose.t.x(); });
+    const double heights[3] = {0.06, 0.034, 0.062}, xs[3] = {-0.066, 0.0, 0.066};
+    for (int k = 0; k < 3; ++k) {
+      INFO("box " << k);
+      CHECK(boxes[k].pose.t.z() - 0.5 * boxes[k].size.z() == Approx(0.0).margin(0.003));
+      CHECK(boxes[k].size.z() == Approx(heights[k]).margin(0.004));
+      CHECK(boxes[k].pose.t.x() == Approx(xs[k]).margin(0.006));
+    }
+  };
+  check(fit_stacked_boxes(pts));
+  // A low box between two parts of one top, nothing seen between them (a taller box's shadow):
+  // one box.
+  Points shadowed;
+  add_box(shadowed, 0.0, 0.0, 0.0, Eigen::Vector3d(0.2, 0.06, 0.04), 0.004);
+  shadowed.erase(std::remove_if(shadowed.begin(), shadowed.end(), [](const Eigen::Vector3d& p) {
+                   return std::abs(p.x()) < 0.02 && p.z() > 0.02;
+                 }), shadowed.end());
+  add_box(shadowed, 0.0, 0.09, 0.0, Eigen::Vector3d(0.1, 0.1, 0.015), 0.004);
+  StackOptions whole;
+  whole.separate_tops = false;
+  const auto split = fit_stacked_boxes(shadowed), one = fit_stacked_boxes(shadowed, {}, whole);
+  REQUIRE(split.size() == one.size());
+  for (std::size_t k = 0; k < split.size(); ++k) CHECK(split[k].size.isApprox(one[k].size));
+}

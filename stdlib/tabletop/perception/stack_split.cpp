@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "stdlib/tabletop/perception/footprint.h"
+#include "stdlib/tabletop/perception/top_parts.h"
 
 namespace ksmc::stdlib::tabletop::perception {
 
@@ -124,36 +125,70 @@ std::vector<UprightBox> fit_stacked_boxes(const Points& points, const BoxFitOpti
     for (const auto& p : rest)
       if (p.z() > below + 0.5 * o.level_gap) top.push_back(p);
     if (top.size() < o.min_points) break;
-    const Rect2 column = min_area_rect(flat(top), box.footprint_trim);
+    // Tops with a lower surface seen between them are different boxes (top_parts.h).
+    const std::vector<Points> parts =
+        o.separate_tops ? top_parts(top, rest, below + 0.5 * o.level_gap, {o.cell, o.min_lower_cells, o.min_points})
+                        : std::vector<Points>{top};
+    std::vector<Rect2> columns;
+    for (const Points& part : parts) columns.push_back(min_area_rect(flat(part), box.footprint_trim));
+    const auto column_of = [&columns](const Eigen::Vector3d& p, double margin) {
+      for (std::size_t k = 0; k < columns.size(); ++k)
+        if (inside(columns[k], {p.x(), p.y()}, margin)) return static_cast<int>(k);
+      return -1;
+    };
     Points remaining;
     for (const auto& p : rest)
-      if (p.z() <= below + 0.5 * o.level_gap && !inside(column, {p.x(), p.y()}, o.column_margin)) remaining.push_back(p);
+      if (p.z() <= below + 0.5 * o.level_gap && column_of(p, o.column_margin) < 0) remaining.push_back(p);
     if (remaining.size() < o.min_points) break;
     const Rect2 under = min_area_rect(flat(remaining), box.footprint_trim);
-    const std::size_t top_points = top.size();
-    Points below_sides;  // the sides lower than this box's bottom, for the boxes under it (the band
-                         // around the plateau is left out, as the rest's points are)
+    // The sides above the plateau go with the column they stand in (else the nearest); those
+    // lower than its bottom, for the boxes under it (the band around the plateau is left out, as
+    // the rest's points are).
+    std::vector<Points> part_sides(parts.size());
+    Points below_sides;
     for (const auto& p : sides) {
-      if (p.z() > below + 0.5 * o.level_gap) top.push_back(p);
-      else if (p.z() <= below - 0.5 * o.level_gap) below_sides.push_back(p);
-    }
-    Points whole, reach;  // the column down to the table; and with the faces a side step may reach
-    for (const auto& p : rest) {
-      if (inside(column, {p.x(), p.y()}, o.column_margin)) whole.push_back(p);
-      if (inside(column, {p.x(), p.y()}, o.sides.max_offset)) reach.push_back(p);
+      if (p.z() > below + 0.5 * o.level_gap) {
+        int k = column_of(p, o.column_margin);
+        if (k < 0) {
+          k = 0;
+          for (std::size_t j = 1; j < columns.size(); ++j)
+            if ((columns[j].center - p.head<2>()).squaredNorm() < (columns[static_cast<std::size_t>(k)].center - p.head<2>()).squaredNorm())
+              k = static_cast<int>(j);
+        }
+        part_sides[static_cast<std::size_t>(k)].push_back(p);
+      } else if (p.z() <= below - 0.5 * o.level_gap) {
+        below_sides.push_back(p);
+      }
     }
     std::vector<UprightBox> column_boxes;
-    if (covered(column, under) >= o.min_support ||
-        (o.free_space && seen != nullptr && seen_through_below(column, below, top_points, o, *seen)) ||
-        steps_at(reach, below, o)) {  // resting on the rest: bottom at the plateau below
-      column_boxes = fit_column(top, below, box, o.sides);
-      sides = std::move(below_sides);
-      if (o.lower_sides)
-        for (const auto& p : rest)
-          if (p.z() <= below - 0.5 * o.level_gap && inside(column, {p.x(), p.y()}, o.column_margin)) sides.push_back(p);
-    } else {  // a merged neighbour standing on the table: its column goes down to the table
-      column_boxes = fit_column(whole, 0.0, box, o.sides);
+    Points next_sides = std::move(below_sides);
+    bool any_rests = false;
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      const Rect2& column = columns[k];
+      Points whole, reach;  // the column down to the table; and with the faces a side step may reach
+      for (const auto& p : rest) {
+        if (inside(column, {p.x(), p.y()}, o.column_margin)) whole.push_back(p);
+        if (inside(column, {p.x(), p.y()}, o.sides.max_offset)) reach.push_back(p);
+      }
+      std::vector<UprightBox> fitted;
+      if (covered(column, under) >= o.min_support ||
+          (o.free_space && seen != nullptr && seen_through_below(column, below, parts[k].size(), o, *seen)) ||
+          steps_at(reach, below, o)) {  // resting on the rest: bottom at the plateau below
+        any_rests = true;
+        Points part = parts[k];
+        part.insert(part.end(), part_sides[k].begin(), part_sides[k].end());
+        fitted = fit_column(part, below, box, o.sides);
+        if (o.lower_sides)
+          for (const auto& p : rest)
+            if (p.z() <= below - 0.5 * o.level_gap && inside(column, {p.x(), p.y()}, o.column_margin)) next_sides.push_back(p);
+      } else {  // a merged neighbour standing on the table: its column goes down to the table
+        fitted = fit_column(whole, 0.0, box, o.sides);
+        next_sides.insert(next_sides.end(), part_sides[k].begin(), part_sides[k].end());
+      }
+      column_boxes.insert(column_boxes.end(), fitted.begin(), fitted.end());
     }
+    // With no box resting on the rest, the sides are kept as they were (none was used).
+    if (any_rests) sides = std::move(next_sides);
     upper.push_back(std::move(column_boxes));
     rest = std::move(remaining);
   }

@@ -34,6 +34,10 @@ struct StackOptions {
   std::size_t min_seen_through = 20;
   double seen_through_share = 0.05;
   int max_boxes = 6;
+  // Tops above one plateau with a lower surface seen between them (at least `min_lower_cells`
+  // cells on the line between them) are peeled as different boxes (top_parts.h); off: as one.
+  bool separate_tops = true;
+  int min_lower_cells = 2;
   // A resting upper box hides part of the lower one's top; the lower box's side faces under
   // it (below the plateau) stay with the lower box, so its footprint reaches under the upper.
   bool lower_sides = true;
