@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "stdlib/tabletop/perception/hidden_bottom.h"
@@ -257,6 +258,51 @@ TEST_CASE("hidden bottom: a box over another grows down to that box's top, not t
   CHECK(boxes[2].size.z() == Approx(0.12));
   CHECK(bottom_height(boxes[1]) == 0.0);  // the others as they were
   CHECK(boxes[1].size.z() == Approx(0.08));
+}
+
+TEST_CASE("hidden bottom: a box under a larger one, fitted short by its overhang, grows up to it",
+          "[perception][hidden_bottom]") {
+  // A 28 x 14 x 4 cm box on a 10 x 10 x 4 cm one: from the front, the upper box's 2 cm overhang
+  // hides the lower box's front face above about 2.7 cm. Fitted from what is seen, the lower box
+  // ends 13 mm under the upper one: within rest_depth, and the box over it hovered.
+  const std::vector<tp::CastBox> stack{tp::upright_box(0.0, 0.0, 0.0, Eigen::Vector3d(0.10, 0.10, 0.04)),
+                                       tp::upright_box(0.0, 0.0, 0.04, Eigen::Vector3d(0.28, 0.14, 0.04))};
+  const auto upright_at = [](double bottom, const Eigen::Vector3d& size) {
+    UprightBox b;
+    b.size = size;
+    b.pose.t = Eigen::Vector3d(0.0, 0.0, bottom + 0.5 * size.z());
+    return b;
+  };
+  const auto fitted = [&] {
+    return std::vector<UprightBox>{upright_at(0.0, Eigen::Vector3d(0.10, 0.10, 0.027)),
+                                   upright_at(0.04, Eigen::Vector3d(0.28, 0.14, 0.04))};
+  };
+  FreeSpace front;
+  front.sensor = kFront;
+  front.points = tp::table_view(kFront, stack);
+  const RayIndex front_rays(front);
+  std::vector<UprightBox> boxes = fitted();
+  CHECK(grow_hidden_bottoms(boxes, front_rays, 0.03) == 1);
+  CHECK(bottom_height(boxes[0]) == Approx(0.0));
+  CHECK(boxes[0].size.z() == Approx(0.04));
+  CHECK(bottom_height(boxes[1]) == Approx(0.04));  // the upper box as it was
+  CHECK(boxes[1].size.z() == Approx(0.04));
+  HiddenBottomOptions before;  // the gap kept, as before close_gap
+  before.close_gap = std::numeric_limits<double>::infinity();
+  boxes = fitted();
+  CHECK(grow_hidden_bottoms(boxes, front_rays, 0.03, before) == 0);
+  CHECK(boxes[0].size.z() == Approx(0.027));
+
+  // The same 13 mm gap, truly there (something hidden holds the upper box) and seen through
+  // from low at the side: the lower box keeps its top.
+  const std::vector<tp::CastBox> gap{tp::upright_box(0.0, 0.0, 0.0, Eigen::Vector3d(0.10, 0.10, 0.027)), stack[1]};
+  FreeSpace side;
+  side.sensor = Eigen::Vector3d(0.9, 0.0, 0.034);
+  side.points = tp::table_view(side.sensor, gap);
+  const RayIndex side_rays(side);
+  boxes = fitted();
+  CHECK(grow_hidden_bottoms(boxes, side_rays, 0.03) == 0);
+  CHECK(boxes[0].size.z() == Approx(0.027));
 }
 
 TEST_CASE("seen under: a book on a smaller box is two boxes", "[perception][seen_under]") {

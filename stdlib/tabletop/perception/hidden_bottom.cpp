@@ -101,18 +101,22 @@ int grow_hidden_bottoms(std::vector<UprightBox>& boxes, const RayIndex& rays, do
     UprightBox& box = boxes[i];
     if (!is_upright(box)) continue;
     const double bottom = bottom_height(box);
-    if (bottom <= float_gap || rests_on_another(box, i)) continue;
     const auto [floor, under] = floor_under(box, i);
-    if (bottom - floor <= float_gap) continue;
-    if (hidden(rays_under(box, rays, options, floor))) {
-      span(box, floor, bottom + box.size.z());
-      solid[i] = Obb::from_pose(box.pose, box.size);
-      ++grown;
-      continue;
+    const bool floats = bottom > float_gap && !rests_on_another(box, i);
+    if (floats && bottom - floor > float_gap) {
+      if (hidden(rays_under(box, rays, options, floor))) {
+        span(box, floor, bottom + box.size.z());
+        solid[i] = Obb::from_pose(box.pose, box.size);
+        ++grown;
+        continue;
+      }
+    } else if (bottom - floor <= options.close_gap) {
+      continue;  // on the table or on a box, or over one with a gap too thin to probe
     }
-    // The space under the box is not hidden as a whole (seen past the box under it), but the
-    // column over the box under it may be: its top hidden by this box, which lies on it and
-    // overhangs it. Rays that end on this box count as hiding it; the lower box's own do not.
+    // The space under the box is not hidden as a whole (seen past the box under it), or the gap
+    // to the box under it is narrower than float_gap: the column over that box may be hidden,
+    // its top by this box, which lies on it and overhangs it. Rays that end on this box count
+    // as hiding it; the lower box's own do not.
     if (under == kTable || !is_upright(boxes[under])) continue;
     UprightBox& lower = boxes[under];
     Obb column;  // the lower box's footprint (inset, at most to half its width) up to this box's bottom

@@ -19,7 +19,9 @@
 // The other way round, a box lying on a box it overhangs can hide the lower box's top and
 // upper sides: the lower box is fitted too short and the upper one floats over it. Then the
 // lower box grows up to the upper one's bottom when the column over its footprint is hidden
-// (rays ending on the upper box count as hiding it).
+// (rays ending on the upper box count as hiding it). So it does when the upper box is within
+// `rest_depth` of the lower one, with a gap over `close_gap` (a book on a book under a larger
+// one: its upper sides hidden, it was fitted 13-24 mm short, and the box on it hovered).
 #pragma once
 
 #include <cstddef>
@@ -37,6 +39,9 @@ struct HiddenBottomOptions {
   std::size_t min_rays = 20;
   double hidden_share = 0.9;
   double rest_depth = 0.015;   // m
+  // m; a box over another within rest_depth, with a gap wider than this (and the column over the
+  // lower box hidden), closes it: the lower box grows up to its bottom.
+  double close_gap = 0.01;
 };
 
 struct SpaceUnder {
@@ -58,8 +63,9 @@ SpaceUnder rays_under(const UprightBox& box, const RayIndex& rays, const HiddenB
 // under it (its top kept): the top of the highest other box under its footprint, or the
 // table. When that space is not hidden as a whole but the column over that highest box is
 // (the floating box lies on it and overhangs it, so the sensor saw neither the lower box's
-// top nor its upper sides), the lower box grows up to the floating box's bottom instead.
-// Returns how many grew. Boxes not upright are left alone.
+// top nor its upper sides), the lower box grows up to the floating box's bottom instead. So it
+// does for a box over another by less than `float_gap`, or resting on it within `rest_depth`,
+// with a gap wider than `close_gap`. Returns how many grew. Boxes not upright are left alone.
 int grow_hidden_bottoms(std::vector<UprightBox>& boxes, const RayIndex& rays, double float_gap,
                         const HiddenBottomOptions& options = {});
 
