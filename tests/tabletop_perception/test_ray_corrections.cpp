@@ -305,6 +305,30 @@ TEST_CASE("hidden bottom: a box under a larger one, fitted short by its overhang
   CHECK(boxes[0].size.z() == Approx(0.027));
 }
 
+TEST_CASE("hidden bottom: a box seen only as a strip under a book grows up to it", "[perception][hidden_bottom]") {
+  // A 20 x 22 cm book on a 15 x 6 x 6.5 cm box, seen from the front: the book's 8 cm overhang
+  // hides all of the lower box but the foot of its front face, fitted as a 5 mm strip 1.6 cm
+  // high. No point of the book's footprint grid lies over the strip; the strip's top lies under
+  // the book, so the book is over it and the strip grows up to the book.
+  FreeSpace seen;
+  seen.sensor = kFront;
+  seen.points = tp::table_view(kFront, {tp::upright_box(0.0, 0.0, 0.0, Eigen::Vector3d(0.15, 0.06, 0.065)),
+                                        tp::upright_box(0.0, 0.0, 0.065, Eigen::Vector3d(0.20, 0.22, 0.04))});
+  const RayIndex rays(seen);
+  const auto upright_at = [](double y, double bottom, const Eigen::Vector3d& size) {
+    UprightBox b;
+    b.size = size;
+    b.pose.t = Eigen::Vector3d(0.0, y, bottom + 0.5 * size.z());
+    return b;
+  };
+  std::vector<UprightBox> boxes{upright_at(-0.0325, 0.0, Eigen::Vector3d(0.15, 0.005, 0.016)),
+                                upright_at(0.0, 0.065, Eigen::Vector3d(0.20, 0.22, 0.04))};
+  CHECK(grow_hidden_bottoms(boxes, rays, 0.03) == 1);
+  CHECK(bottom_height(boxes[0]) == Approx(0.0));
+  CHECK(boxes[0].size.z() == Approx(0.065));
+  CHECK(bottom_height(boxes[1]) == Approx(0.065));  // the book as it was
+}
+
 TEST_CASE("seen under: a book on a smaller box is two boxes", "[perception][seen_under]") {
   const Points cloud = tp::sensor_view(kAside, kBookOnBox);
   const std::vector<Heights> before = heights(run(cloud, true, false));

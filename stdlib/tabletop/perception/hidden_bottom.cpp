@@ -71,20 +71,32 @@ int grow_hidden_bottoms(std::vector<UprightBox>& boxes, const RayIndex& rays, do
         if (k != self && holds[k] && solid[k].contains(p, 0.5 * options.rest_depth)) return true;
     return false;
   };
+  // Whether `p` (a height aside) lies over `box`'s footprint shrunk by `inset`.
+  const auto over_footprint = [&options](const UprightBox& box, const Eigen::Vector3d& p) {
+    const Eigen::Vector3d l = box.pose.q.conjugate() * (p - box.pose.t);
+    return std::abs(l.x()) <= 0.5 * box.size.x() - options.inset && std::abs(l.y()) <= 0.5 * box.size.y() - options.inset;
+  };
   // The surface under `box`: the highest top, at most `rest_depth` above its bottom, of the
-  // boxes other than `self` under one of its footprint's points, and that box; the table (0,
-  // no box) when none.
+  // boxes other than `self` under one of its footprint's points, or with a point of their top
+  // under its footprint (inset: a box flush beside it is not under it; a narrow strip, all a
+  // lower box showed of itself, falls between the footprint's points), and that box; the table
+  // (0, no box) when none.
   constexpr std::size_t kTable = std::numeric_limits<std::size_t>::max();
   const auto floor_under = [&](const UprightBox& box, std::size_t self) {
     const double bottom = bottom_height(box);
+    const std::array<Eigen::Vector3d, 25> grid = footprint_grid(box, 0.0);
     std::pair<double, std::size_t> floor{0.0, kTable};
-    for (const Eigen::Vector3d& p : footprint_grid(box, 0.0))
-      for (std::size_t k = 0; k < solid.size(); ++k) {
-        const double top = solid[k].max_z();
-        if (k == self || !holds[k] || top > bottom + options.rest_depth || top <= floor.first) continue;
-        if (solid[k].contains(Eigen::Vector3d(p.x(), p.y(), top - 0.5 * options.rest_depth), 0.5 * options.rest_depth))
-          floor = {top, k};
-      }
+    for (std::size_t k = 0; k < solid.size(); ++k) {
+      const double top = solid[k].max_z();
+      if (k == self || !holds[k] || top > bottom + options.rest_depth || top <= floor.first) continue;
+      const auto holds_point = [&](const Eigen::Vector3d& p) {
+        return solid[k].contains(Eigen::Vector3d(p.x(), p.y(), top - 0.5 * options.rest_depth), 0.5 * options.rest_depth);
+      };
+      const auto under_box = [&](const Eigen::Vector3d& q) { return over_footprint(box, q); };
+      const std::array<Eigen::Vector3d, 25> its_top = footprint_grid(boxes[k], 0.5 * boxes[k].size.z());
+      if (std::any_of(grid.begin(), grid.end(), holds_point) || std::any_of(its_top.begin(), its_top.end(), under_box))
+        floor = {top, k};
+    }
     return floor;
   };
   const auto hidden = [&options](const SpaceUnder& s) {

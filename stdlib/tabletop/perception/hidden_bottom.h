@@ -60,8 +60,9 @@ SpaceUnder rays_under(const UprightBox& box, const RayIndex& rays, const HiddenB
 
 // Grows each upright box of `boxes` whose bottom is above `float_gap` (the box fit's), that
 // rests on no other box of `boxes` and whose space under it is hidden, down to the surface
-// under it (its top kept): the top of the highest other box under its footprint, or the
-// table. When that space is not hidden as a whole but the column over that highest box is
+// under it (its top kept): the top of the highest other box under its footprint (one of its
+// footprint's points over that box, or a point of that box's top under its footprint, inset),
+// or the table. When that space is not hidden as a whole but the column over that highest box is
 // (the floating box lies on it and overhangs it, so the sensor saw neither the lower box's
 // top nor its upper sides), the lower box grows up to the floating box's bottom instead. So it
 // does for a box over another by less than `float_gap`, or resting on it within `rest_depth`,
