@@ -63,6 +63,14 @@ std::vector<Heights> heights(const CloudScene& cs) {  // lowest top first
 }
 
 
+// An upright box, axes along the table's, centred at x = 0 and `y`, from `bottom` up.
+UprightBox upright_at(double y, double bottom, const Eigen::Vector3d& size) {
+  UprightBox b;
+  b.size = size;
+  b.pose.t = Eigen::Vector3d(0.0, y, bottom + 0.5 * size.z());
+  return b;
+}
+
 // A book lying on a narrower box, flush with it at the front and 3 cm over it on either side:
 // the book hides the lower box's top, and the front faces make one cluster of the two.
 const std::vector<tp::CastBox> kBookOnBox{tp::upright_box(0.0, 0.03, 0.0, Eigen::Vector3d(0.13, 0.21, 0.06)),
@@ -244,12 +252,6 @@ TEST_CASE("hidden bottom: a box over another grows down to that box's top, not t
                                         tp::upright_box(0.0, 0.10, 0.0, Eigen::Vector3d(0.14, 0.14, 0.08)),
                                         tp::upright_box(0.0, 0.10, 0.08, Eigen::Vector3d(0.08, 0.08, 0.12))});
   const RayIndex rays(seen);
-  const auto upright_at = [](double y, double bottom, const Eigen::Vector3d& size) {
-    UprightBox b;
-    b.size = size;
-    b.pose.t = Eigen::Vector3d(0.0, y, bottom + 0.5 * size.z());
-    return b;
-  };
   std::vector<UprightBox> boxes{upright_at(-0.05, 0.0, Eigen::Vector3d(0.2, 0.08, 0.17)),
                                 upright_at(0.10, 0.0, Eigen::Vector3d(0.14, 0.14, 0.08)),
                                 upright_at(0.10, 0.14, Eigen::Vector3d(0.08, 0.08, 0.06))};  // the part seen
@@ -267,15 +269,9 @@ TEST_CASE("hidden bottom: a box under a larger one, fitted short by its overhang
   // ends 13 mm under the upper one: within rest_depth, and the box over it hovered.
   const std::vector<tp::CastBox> stack{tp::upright_box(0.0, 0.0, 0.0, Eigen::Vector3d(0.10, 0.10, 0.04)),
                                        tp::upright_box(0.0, 0.0, 0.04, Eigen::Vector3d(0.28, 0.14, 0.04))};
-  const auto upright_at = [](double bottom, const Eigen::Vector3d& size) {
-    UprightBox b;
-    b.size = size;
-    b.pose.t = Eigen::Vector3d(0.0, 0.0, bottom + 0.5 * size.z());
-    return b;
-  };
   const auto fitted = [&] {
-    return std::vector<UprightBox>{upright_at(0.0, Eigen::Vector3d(0.10, 0.10, 0.027)),
-                                   upright_at(0.04, Eigen::Vector3d(0.28, 0.14, 0.04))};
+    return std::vector<UprightBox>{upright_at(0.0, 0.0, Eigen::Vector3d(0.10, 0.10, 0.027)),
+                                   upright_at(0.0, 0.04, Eigen::Vector3d(0.28, 0.14, 0.04))};
   };
   FreeSpace front;
   front.sensor = kFront;
@@ -315,12 +311,6 @@ TEST_CASE("hidden bottom: a box seen only as a strip under a book grows up to it
   seen.points = tp::table_view(kFront, {tp::upright_box(0.0, 0.0, 0.0, Eigen::Vector3d(0.15, 0.06, 0.065)),
                                         tp::upright_box(0.0, 0.0, 0.065, Eigen::Vector3d(0.20, 0.22, 0.04))});
   const RayIndex rays(seen);
-  const auto upright_at = [](double y, double bottom, const Eigen::Vector3d& size) {
-    UprightBox b;
-    b.size = size;
-    b.pose.t = Eigen::Vector3d(0.0, y, bottom + 0.5 * size.z());
-    return b;
-  };
   std::vector<UprightBox> boxes{upright_at(-0.0325, 0.0, Eigen::Vector3d(0.15, 0.005, 0.016)),
                                 upright_at(0.0, 0.065, Eigen::Vector3d(0.20, 0.22, 0.04))};
   CHECK(grow_hidden_bottoms(boxes, rays, 0.03) == 1);
