@@ -290,8 +290,9 @@ TEST_CASE("hidden bottom: a box under a larger one, fitted short by its overhang
   CHECK(boxes[0].size.z() == Approx(0.027));
 
   // The same 13 mm gap, truly there (something hidden holds the upper box) and seen through
-  // from low at the side: the lower box keeps its top.
-  const std::vector<tp::CastBox> gap{tp::upright_box(0.0, 0.0, 0.0, Eigen::Vector3d(0.10, 0.10, 0.027)), stack[1]};
+  // from low at the side, onto a board behind: the lower box keeps its top.
+  const std::vector<tp::CastBox> gap{tp::upright_box(0.0, 0.0, 0.0, Eigen::Vector3d(0.10, 0.10, 0.027)), stack[1],
+                                     tp::upright_box(-0.3, 0.0, 0.0, Eigen::Vector3d(0.02, 0.6, 0.2))};
   FreeSpace side;
   side.sensor = Eigen::Vector3d(0.9, 0.0, 0.034);
   side.points = tp::table_view(side.sensor, gap);
@@ -299,6 +300,16 @@ TEST_CASE("hidden bottom: a box under a larger one, fitted short by its overhang
   boxes = fitted();
   CHECK(grow_hidden_bottoms(boxes, side_rays, 0.03) == 0);
   CHECK(boxes[0].size.z() == Approx(0.027));
+  // With nothing behind, no ray comes back through the gap: unseen, it counts as hidden.
+  FreeSpace open;
+  open.sensor = side.sensor;
+  open.points = tp::table_view(open.sensor, {gap[0], gap[1]});
+  boxes = fitted();
+  CHECK(grow_hidden_bottoms(boxes, RayIndex(open), 0.03) == 1);
+  HiddenBottomOptions rays_only;  // only rays ending before it hide a space
+  rays_only.unseen_hidden = false;
+  boxes = fitted();
+  CHECK(grow_hidden_bottoms(boxes, RayIndex(open), 0.03, rays_only) == 0);
 }
 
 TEST_CASE("hidden bottom: a box seen only as a strip under a book grows up to it", "[perception][hidden_bottom]") {
