@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include <fmt/format.h>
 
 #include "stdlib/tabletop/cloud_likelihood.h"
@@ -42,11 +44,9 @@ double seconds(const std::function<void()>& op, int runs) {
   return median(t);
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  const int runs = argc > 1 ? std::max(1, std::atoi(argv[1])) : 7;
-  const auto dir = std::filesystem::temp_directory_path() / "ksmc_bench_perception";
+int run(int runs) {
+  // One folder per process: two runs at once (base and change side by side) must not share it.
+  const auto dir = std::filesystem::temp_directory_path() / fmt::format("ksmc_bench_perception_{}", ::getpid());
   std::filesystem::create_directories(dir);
   fmt::print("bench_tabletop_perception: median of {} runs per scene, median over 3 scenes\n", runs);
   fmt::print("{:<8} {:>5} {:>8} {:>7} {:>14} {:>10} {:>10} {:>10} {:>14} {:>14} {:>14}\n", "family", "boxes",
@@ -97,4 +97,16 @@ int main(int argc, char** argv) {
   }
   std::filesystem::remove_all(dir);
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int runs = argc > 1 ? std::max(1, std::atoi(argv[1])) : 7;
+  try {
+    return run(runs);
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "bench_tabletop_perception: {}\n", e.what());
+    return 1;
+  }
 }
