@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include <fmt/format.h>
 #include <opencv2/imgcodecs.hpp>
 
@@ -51,7 +53,8 @@ double seconds(const std::function<void()>& op, int runs, double* cpu = nullptr)
 
 int main(int argc, char** argv) {
   const int runs = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
-  const fs::path dir = fs::temp_directory_path() / "ksmc_bench_stereo";
+  // One folder per process: two runs at once must not share it.
+  const fs::path dir = fs::temp_directory_path() / fmt::format("ksmc_bench_stereo_{}", ::getpid());
   fmt::print("bench_tabletop_stereo: median of {} runs per scene, median over 3 scenes\n", runs);
   fmt::print("{:>5} {:>8} {:>7} {:>9} {:>9} {:>9} {:>9} {:>14} {:>14}\n", "boxes", "points", "found", "s stereo",
              "s total", "cpu total", "s files", "centre mm", "angle deg");
