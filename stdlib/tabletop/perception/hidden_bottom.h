@@ -19,9 +19,10 @@
 // The other way round, a box lying on a box it overhangs can hide the lower box's top and
 // upper sides: the lower box is fitted too short and the upper one floats over it. Then the
 // lower box grows up to the upper one's bottom when the column over its footprint is hidden
-// (rays ending on the upper box count as hiding it). So it does when the upper box is within
-// `rest_depth` of the lower one, with a gap over `close_gap` (a book on a book under a larger
-// one: its upper sides hidden, it was fitted 13-24 mm short, and the box on it hovered).
+// (rays ending on the upper box count as hiding it). So it does when the upper box is over
+// the lower one by less than the fit's float gap, or within `rest_depth` of it, with a gap over
+// `close_gap` (a book on a book under a larger one: its upper sides hidden, it was fitted
+// 13-24 mm short, and the box on it hovered).
 #pragma once
 
 #include <cstddef>
@@ -39,8 +40,9 @@ struct HiddenBottomOptions {
   std::size_t min_rays = 20;
   double hidden_share = 0.9;
   double rest_depth = 0.015;   // m
-  // m; a box over another within rest_depth, with a gap wider than this (and the column over the
-  // lower box hidden), closes it: the lower box grows up to its bottom.
+  // m; a box over another by less than the fit's float gap, or within rest_depth of it, with a
+  // gap wider than this (and the column over the lower box hidden), closes it: the lower box
+  // grows up to its bottom.
   double close_gap = 0.01;
   // A space (probed, so at least 2 x inset across) no ray ended in or passed through counts as
   // hidden, however few rays ended before it (none: it lies outside the sensor's view, or
