@@ -300,16 +300,6 @@ TEST_CASE("hidden bottom: a box under a larger one, fitted short by its overhang
   boxes = fitted();
   CHECK(grow_hidden_bottoms(boxes, side_rays, 0.03) == 0);
   CHECK(boxes[0].size.z() == Approx(0.027));
-  // With nothing behind, no ray comes back through the gap: unseen, it counts as hidden.
-  FreeSpace open;
-  open.sensor = side.sensor;
-  open.points = tp::table_view(open.sensor, {gap[0], gap[1]});
-  boxes = fitted();
-  CHECK(grow_hidden_bottoms(boxes, RayIndex(open), 0.03) == 1);
-  HiddenBottomOptions rays_only;  // only rays ending before it hide a space
-  rays_only.unseen_hidden = false;
-  boxes = fitted();
-  CHECK(grow_hidden_bottoms(boxes, RayIndex(open), 0.03, rays_only) == 0);
 }
 
 TEST_CASE("hidden bottom: a box seen only as a strip under a book grows up to it", "[perception][hidden_bottom]") {

@@ -13,7 +13,6 @@ namespace ksmc::stdlib::tabletop::perception {
 SpaceUnder rays_meeting(const Obb& space, const std::vector<Obb>& own, const RayIndex& rays, double margin) {
   const FreeSpace& seen = rays.free_space();
   SpaceUnder out;
-  out.probed = true;
   const Eigen::Vector3d o = in_box_axes(space, seen.sensor - space.center);
   rays.for_each_toward(space, [&](std::size_t ray) {
     const Eigen::Vector3d& p = seen.points[ray];
@@ -102,7 +101,6 @@ int grow_hidden_bottoms(std::vector<UprightBox>& boxes, const RayIndex& rays, do
   };
   const auto hidden = [&options](const SpaceUnder& s) {
     const std::size_t all = s.before + s.inside + s.through;
-    if (options.unseen_hidden && s.probed && s.inside == 0 && s.through == 0) return true;
     return s.before >= options.min_rays && static_cast<double>(s.before) >= options.hidden_share * static_cast<double>(all);
   };
   // `box` spans `lo` to `hi` (heights), its footprint kept.

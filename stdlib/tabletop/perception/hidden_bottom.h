@@ -44,15 +44,10 @@ struct HiddenBottomOptions {
   // gap wider than this (and the column over the lower box hidden), closes it: the lower box
   // grows up to its bottom.
   double close_gap = 0.01;
-  // A space (probed, so at least 2 x inset across) no ray ended in or passed through counts as
-  // hidden, however few rays ended before it (none: it lies outside the sensor's view, or
-  // straight behind the box itself).
-  bool unseen_hidden = true;
 };
 
 struct SpaceUnder {
   std::size_t before = 0, inside = 0, through = 0;
-  bool probed = false;  // false: the space was empty (inset to nothing), no ray was read
 };
 
 // How the rays (RayIndex: the cloud and its sensor, each line going on past its point) meet
