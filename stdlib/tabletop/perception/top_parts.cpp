@@ -6,6 +6,8 @@
 #include <map>
 #include <numeric>
 
+#include "stdlib/tabletop/perception/point_grid.h"
+
 namespace ksmc::stdlib::tabletop::perception {
 
 namespace {
@@ -21,8 +23,8 @@ struct HeightGrid {
   long x0 = 0, y0 = 0, nx = 0, ny = 0;
   std::vector<double> highest;
 
-  [[nodiscard]] long ix(double x) const { return std::lround(std::floor(x / size)) - x0; }
-  [[nodiscard]] long iy(double y) const { return std::lround(std::floor(y / size)) - y0; }
+  [[nodiscard]] long ix(double x) const { return cell_of(x, size) - x0; }
+  [[nodiscard]] long iy(double y) const { return cell_of(y, size) - y0; }
   [[nodiscard]] bool in(long i, long j) const { return i >= 0 && j >= 0 && i < nx && j < ny; }
   [[nodiscard]] std::size_t at(long i, long j) const { return static_cast<std::size_t>(j * nx + i); }
   [[nodiscard]] std::size_t at(const Eigen::Vector3d& p) const { return at(ix(p.x()), iy(p.y())); }
@@ -35,7 +37,7 @@ HeightGrid height_grid(const Points& rest, const Points& top, double size) {
   bool first = true;
   for (const Points* pts : {&rest, &top})
     for (const auto& p : *pts) {
-      const long i = std::lround(std::floor(p.x() / size)), j = std::lround(std::floor(p.y() / size));
+      const long i = cell_of(p.x(), size), j = cell_of(p.y(), size);
       if (first) g.x0 = x1 = i, g.y0 = y1 = j, first = false;
       g.x0 = std::min(g.x0, i), x1 = std::max(x1, i), g.y0 = std::min(g.y0, j), y1 = std::max(y1, j);
     }
@@ -93,8 +95,7 @@ std::vector<Points> top_parts(const Points& top, const Points& rest, double abov
     ++count[static_cast<std::size_t>(k)];
     centre[static_cast<std::size_t>(k)] += top[i].head<2>();
   }
-  for (std::size_t k = 0; k < n; ++k)
-    if (count[k] > 0) centre[k] /= static_cast<double>(count[k]);
+  for (std::size_t k = 0; k < n; ++k) centre[k] /= static_cast<double>(count[k]);  // every part holds a top point
   // Cells seen lower on the segment between two parts' centres.
   const auto lower_between = [&](std::size_t a, std::size_t b) {
     const Eigen::Vector2d d = centre[b] - centre[a];
@@ -117,7 +118,7 @@ std::vector<Points> top_parts(const Points& top, const Points& rest, double abov
   std::iota(parent.begin(), parent.end(), 0);
   for (std::size_t a = 0; a < n; ++a)
     for (std::size_t b = a + 1; b < n; ++b)
-      if (count[a] > 0 && count[b] > 0 && lower_between(a, b) < o.min_lower_cells)
+      if (lower_between(a, b) < o.min_lower_cells)
         parent[static_cast<std::size_t>(root(parent, static_cast<int>(a)))] = root(parent, static_cast<int>(b));
   // Groups; a group with too few points joins the group whose centre is nearest.
   std::vector<std::size_t> group_count(n, 0);
@@ -128,9 +129,9 @@ std::vector<Points> top_parts(const Points& top, const Points& rest, double abov
   if (big.size() <= 1) return {top};
   std::vector<std::size_t> home(n);
   for (std::size_t k = 0; k < n; ++k) {
-    const auto g = static_cast<std::size_t>(root(parent, static_cast<int>(k)));
-    if (group_count[g] >= o.min_points) {
-      home[k] = g;
+    const auto group = static_cast<std::size_t>(root(parent, static_cast<int>(k)));
+    if (group_count[group] >= o.min_points) {
+      home[k] = group;
       continue;
     }
     home[k] = *std::min_element(big.begin(), big.end(), [&](std::size_t x, std::size_t y) {
@@ -140,8 +141,8 @@ std::vector<Points> top_parts(const Points& top, const Points& rest, double abov
   std::map<std::size_t, std::size_t> index;  // group -> output position, by first point
   std::vector<Points> out;
   for (std::size_t i = 0; i < top.size(); ++i) {
-    const std::size_t g = home[static_cast<std::size_t>(label[i])];
-    const auto [it, fresh] = index.emplace(g, out.size());
+    const std::size_t group = home[static_cast<std::size_t>(label[i])];
+    const auto [it, fresh] = index.emplace(group, out.size());
     if (fresh) out.emplace_back();
     out[it->second].push_back(top[i]);
   }
