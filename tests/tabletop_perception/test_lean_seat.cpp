@@ -117,3 +117,45 @@ TEST_CASE("lean seat: boxes left as they are", "[perception][lean_seat]") {
   std::vector<UprightBox> kept{wall(), fit};
   CHECK(seat_leaning_boxes(kept, {{}, seen_faces(truth)}, off) == 0);
 }
+
+TEST_CASE("lean seat: a box lying across a low box, fitted too thick underneath, is cut there and not lowered",
+          "[perception][lean_seat]") {
+  // A 20 x 7 x 4.8 cm box turned 20 degrees about y, its foot on the table at x = 0.2, lying
+  // across a bar (4 cm deep in x, 20 cm long in y) whose top edge touches its underside. The
+  // sensor saw its top and its upper end; the fit put 8 mm too much on its underside, so it
+  // cuts into the bar. Lowering the box after cutting its underside would press that side
+  // back into the bar (a 27 mm cut on the simulated cloud this case came from).
+  const double a = 20.0 * kDeg, thick = 0.048;
+  UprightBox truth;
+  truth.size = Eigen::Vector3d(0.2, 0.07, thick);
+  truth.pose.q = Eigen::Quaterniond(Eigen::AngleAxisd(a, Eigen::Vector3d::UnitY()));
+  const Eigen::Matrix3d r = truth.pose.q.toRotationMatrix();
+  truth.pose.t = Eigen::Vector3d(0.2, 0.0, 0.0) - r * Eigen::Vector3d(0.1, 0.0, -0.5 * thick);
+  // The bar's height: the underside's height over the bar's edge nearer the foot.
+  const Eigen::Vector3d under = truth.pose.t - 0.5 * thick * r.col(2), up = r.col(2);
+  const double bar_x = 0.05, edge = bar_x + 0.02;
+  const double h = under.z() - up.x() * (edge - under.x()) / up.z();
+  UprightBox bar;
+  bar.size = Eigen::Vector3d(0.04, 0.2, h);
+  bar.pose.t = Eigen::Vector3d(bar_x, 0.0, 0.5 * h);
+  REQUIRE(depth(truth, bar) < 1e-6);
+  UprightBox fit = truth;  // 8 mm more on the underside (local -z)
+  fit.size.z() += 0.008;
+  fit.pose.t -= 0.004 * r.col(2);
+  REQUIRE(depth(fit, bar) > 0.005);
+  // The points the sensor saw: the top (local +z) and the upper end (local -x), 5 mm apart.
+  const Obb t = Obb::from_pose(truth.pose, truth.size);
+  Points seen;
+  for (double v = -0.03; v <= 0.03; v += 0.005) {
+    for (double u = -0.095; u <= 0.095; u += 0.005) seen.push_back(t.center + t.axes * Eigen::Vector3d(u, v, t.half.z()));
+    for (double w = -0.02; w <= 0.02; w += 0.005) seen.push_back(t.center + t.axes * Eigen::Vector3d(-t.half.x(), v, w));
+  }
+  std::vector<UprightBox> boxes{bar, fit};
+  CHECK(seat_leaning_boxes(boxes, {{}, seen}) == 1);
+  CHECK(depth(boxes[1], boxes[0]) <= 0.001 + 1e-9);
+  CHECK(boxes[1].size.z() == Approx(thick).margin(0.0015));  // the 8 mm cut off its underside
+  CHECK(boxes[1].size.x() == Approx(0.2));
+  const Obb after = Obb::from_pose(boxes[1].pose, boxes[1].size);
+  const Eigen::Vector3d top = after.center + after.half.z() * after.axes.col(2);
+  CHECK((top - (t.center + t.half.z() * t.axes.col(2))).norm() < 0.001);  // its top where the sensor saw it
+}

@@ -12,15 +12,15 @@ namespace ksmc::stdlib::tabletop::perception {
 
 namespace {
 
-// `box` with its face on side `sign` of axis k moved in by `cut`, then lowered by as much as
-// that raised its lowest corner.
-UprightBox cut_face(const UprightBox& box, int k, double sign, double cut) {
+// `box` with its face on side `sign` of axis k moved in by `cut`, then (`lower`) lowered by as
+// much as that raised its lowest corner.
+UprightBox cut_face(const UprightBox& box, int k, double sign, double cut, bool lower) {
   const Obb before = Obb::from_pose(box.pose, box.size);
   UprightBox out = box;
   out.size(k) -= cut;
   out.pose.t -= 0.5 * sign * cut * before.axes.col(k);
   const double rise = Obb::from_pose(out.pose, out.size).min_z() - before.min_z();
-  if (rise > 0.0) out.pose.t.z() -= rise;
+  if (lower && rise > 0.0) out.pose.t.z() -= rise;
   return out;
 }
 
@@ -61,19 +61,25 @@ int seat_leaning_boxes(std::vector<UprightBox>& boxes, const std::vector<Points>
       if (overlap(boxes[i], upright) <= options.min_depth) continue;
       std::optional<UprightBox> best;
       double least = std::numeric_limits<double>::infinity();
-      for (int k = 0; k < 3; ++k)
-        for (int s = 0; s < 2; ++s) {
-          if (seen[k][s] > options.max_seen) continue;
-          const double sign = s == 0 ? -1.0 : 1.0;
-          double hi = options.max_cut * boxes[i].size(k);
-          if (overlap(cut_face(boxes[i], k, sign, hi), upright) > options.min_depth) continue;
-          double lo = 0.0;
-          for (int it = 0; it < 30; ++it) {  // the least cut, to well under a micrometre
-            const double mid = 0.5 * (lo + hi);
-            (overlap(cut_face(boxes[i], k, sign, mid), upright) > options.min_depth ? lo : hi) = mid;
+      for (const bool lower : {true, false}) {
+        for (int k = 0; k < 3; ++k) {
+          for (int s = 0; s < 2; ++s) {
+            if (seen[k][s] > options.max_seen) continue;
+            const double sign = s == 0 ? -1.0 : 1.0;
+            const auto deep = [&](double cut) {
+              return overlap(cut_face(boxes[i], k, sign, cut, lower), upright) > options.min_depth;
+            };
+            double hi = options.max_cut * boxes[i].size(k);
+            if (deep(hi)) continue;
+            double lo = 0.0;
+            for (int it = 0; it < 30; ++it) {  // the least cut, to well under a micrometre
+              const double mid = 0.5 * (lo + hi);
+              (deep(mid) ? lo : hi) = mid;
+            }
+            if (hi < least) least = hi, best = cut_face(boxes[i], k, sign, hi, lower);
           }
-          if (hi < least) least = hi, best = cut_face(boxes[i], k, sign, hi);
         }
+      }
       if (best) {
         boxes[i] = *best;
         solid[i] = Obb::from_pose(best->pose, best->size);

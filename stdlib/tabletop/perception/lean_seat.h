@@ -6,9 +6,11 @@
 // false. Solid boxes do not cut into each other, and the sensor says nothing against a
 // thinner box where it saw nothing: each tilted box that overlaps an upright box deeper
 // than `min_depth` is cut back on one of its unseen faces, the one needing the least cut,
-// by the least depth that leaves the two at most `min_depth` apart in overlap; its lowest
+// by the least depth that leaves the two at most `min_depth` apart in overlap. Its lowest
 // corner is then lowered back to where it was (a leaning box's foot stays on what it stands
-// on). A face is unseen when at most `max_seen` of the box's points lie within `seen_margin`
+// on), unless the cut without lowering is less: a box lying across an upright one and fitted
+// too thick on its unseen underside is cut there, and lowering it would press that side back
+// into the upright box (sim clouds: a 27 mm cut where 8 mm of underside was too much). A face is unseen when at most `max_seen` of the box's points lie within `seen_margin`
 // of it (over its outline), the points on or in other boxes left out. A box that would need
 // more than `max_cut` of an extent is left as it was.
 #pragma once
