@@ -73,26 +73,36 @@ std::vector<Face> planar_faces(const Points& points, const FaceOptions& o) {
     f.points = std::move(region);
     faces.push_back(std::move(f));
   }
-  // Edges: points near an edge have mixed normals and join no face above; each face takes
-  // the free points next to it that lie on its plane, so that faces reach the box's edges.
   std::stable_sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) {
     return a.points.size() > b.points.size() || (a.points.size() == b.points.size() && a.points.front() < b.points.front());
   });
   for (std::size_t i = 0; i < n; ++i) taken[i] = 0;
   for (const Face& f : faces)
     for (int j : f.points) taken[static_cast<std::size_t>(j)] = 1;
-  for (Face& f : faces) {
-    for (std::size_t k = 0; k < f.points.size(); ++k) {
-      grid.neighbours(points[static_cast<std::size_t>(f.points[k])], nb);
-      for (int j : nb) {
-        const auto u = static_cast<std::size_t>(j);
-        if (taken[u] || std::abs((points[u] - f.centroid).dot(f.normal)) > o.plane_tolerance) continue;
-        taken[u] = 1;
-        f.points.push_back(j);
+  // Each face, largest first, takes the free points on its plane reached from its points
+  // within `g`'s radius that pass `joins` (grown from the points it takes too).
+  const auto extend = [&](const PointGrid& g, const auto& joins) {
+    for (Face& f : faces) {
+      for (std::size_t k = 0; k < f.points.size(); ++k) {
+        g.neighbours(points[static_cast<std::size_t>(f.points[k])], nb);
+        for (int j : nb) {
+          const auto u = static_cast<std::size_t>(j);
+          if (taken[u] || std::abs((points[u] - f.centroid).dot(f.normal)) > o.plane_tolerance || !joins(u, f)) continue;
+          taken[u] = 1;
+          f.points.push_back(j);
+        }
       }
     }
-    std::sort(f.points.begin(), f.points.end());
-  }
+  };
+  // Rows of a face seen at a slant: flat points whose normals agree with the face's.
+  if (o.row_factor > 1.0)
+    extend(PointGrid(points, o.row_factor * o.grow_radius), [&](std::size_t u, const Face& f) {
+      return curvature[u] <= o.max_curvature && std::abs(normal[u].dot(f.normal)) >= cos_max;
+    });
+  // Edges: points near an edge have mixed normals and join no face above; each face takes
+  // the free points next to it that lie on its plane, so that faces reach the box's edges.
+  extend(grid, [](std::size_t, const Face&) { return true; });
+  for (Face& f : faces) std::sort(f.points.begin(), f.points.end());
   std::stable_sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) {
     return a.points.size() > b.points.size() || (a.points.size() == b.points.size() && a.points.front() < b.points.front());
   });

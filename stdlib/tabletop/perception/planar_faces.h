@@ -21,6 +21,11 @@ struct FaceOptions {
   double max_curvature = 0.03;    // smallest eigenvalue / trace above this: an edge point, no face
   std::size_t min_points = 30;    // smaller regions are no face
   double plane_tolerance = 0.004; // m; an edge point joins a neighbouring face this close to its plane
+  // A face seen at a slant is sampled in rows farther apart than grow_radius across them
+  // (dense along them): each row alone is too small a region to be a face. With row_factor
+  // > 1, each face then takes the free points within row_factor x grow_radius whose normals
+  // agree with it and that lie on its plane (plane_tolerance), grown from its points.
+  double row_factor = 0.0;
 };
 
 struct Face {
@@ -29,7 +34,9 @@ struct Face {
   std::vector<int> points;                            // indices into the cluster, ascending
 };
 
-// Faces of `points`, largest first (ties by first index: deterministic).
+// Faces of `points`, largest first (ties by first index: deterministic). A face's normal and
+// centroid are those of the region grown by normals; the rows and edge points it takes after
+// that do not move them.
 std::vector<Face> planar_faces(const Points& points, const FaceOptions& options = {});
 
 }  // namespace ksmc::stdlib::tabletop::perception

@@ -166,22 +166,45 @@ std::optional<TiltedFit> box_of_seed(const Points& points, const std::vector<Fac
                                      bool by_outline, const TiltOptions& o) {
   const Face* const seed = &seed_face;
   const PlaneRect seed_rect = face_rect(points, *seed);
-  // Faces of the same box: perpendicular to the seed and touching it.
+  // Faces of the same box: perpendicular to the seed and touching it. The faces of one box are
+  // perpendicular to each other or lie on one plane: of two faces that are neither (a
+  // neighbour's face near the seed's edge), the one with more points next to the seed is kept
+  // (the box's own face runs along the edge).
   Points seed_points;
   for (int i : seed->points) seed_points.push_back(points[static_cast<std::size_t>(i)]);
   const PointGrid near_seed(seed_points, o.adjacent);
   std::vector<int> nb;
   std::vector<const Face*> box_faces{seed};
+  std::vector<std::size_t> touching{seed->points.size()};
   for (const Face& f : faces) {
     if (&f == seed || std::abs(f.normal.dot(seed->normal)) > std::sin(o.perpendicular_deg * kDeg)) continue;
     if (!meets_plane(points, f, *seed, o.side_tolerance, o.edge_gap) ||
         !meets_plane(points, *seed, f, o.side_tolerance, o.edge_gap))
       continue;
-    const bool touches = std::any_of(f.points.begin(), f.points.end(), [&](int i) {
+    const auto near = static_cast<std::size_t>(std::count_if(f.points.begin(), f.points.end(), [&](int i) {
       near_seed.neighbours(points[static_cast<std::size_t>(i)], nb);
       return !nb.empty();
-    });
-    if (touches) box_faces.push_back(&f);
+    }));
+    if (near == 0) continue;
+    // Faces f cannot share a box with: those neither perpendicular to it nor on its plane.
+    std::vector<std::size_t> clash;
+    for (std::size_t k = 1; k < box_faces.size(); ++k) {
+      const Face& g = *box_faces[k];
+      const double c = std::abs(f.normal.dot(g.normal));
+      const bool same_plane = c > std::cos(o.perpendicular_deg * kDeg) &&
+                              std::abs((f.centroid - g.centroid).dot(g.normal)) <= o.side_tolerance;
+      if (c > std::sin(o.perpendicular_deg * kDeg) && !same_plane) clash.push_back(k);
+    }
+    if (!clash.empty()) {
+      const bool more = std::all_of(clash.begin(), clash.end(), [&](std::size_t k) { return near > touching[k]; });
+      if (!more) continue;
+      for (auto k = clash.rbegin(); k != clash.rend(); ++k) {
+        box_faces.erase(box_faces.begin() + static_cast<std::ptrdiff_t>(*k));
+        touching.erase(touching.begin() + static_cast<std::ptrdiff_t>(*k));
+      }
+    }
+    box_faces.push_back(&f);
+    touching.push_back(near);
   }
   // A vertical seed gives the box's tilt by its outline, and no thickness: another face must.
   if (by_outline && box_faces.size() < 2) return std::nullopt;
@@ -248,6 +271,7 @@ std::optional<TiltedFit> fit_tilted_box(const Points& points, const TiltOptions&
   probe.normal_radius = std::max(probe.normal_radius, 2.0 * o.probe_voxel);
   probe.grow_radius = std::max(probe.grow_radius, 2.0 * o.probe_voxel);
   probe.min_points = 10;
+  probe.row_factor = 0.0;  // the sparse copy's radii already span the rows
   const auto probe_points = static_cast<std::size_t>(
       static_cast<double>(o.min_face_points) * static_cast<double>(sparse.size()) / static_cast<double>(points.size()));
   const std::vector<Face> sparse_faces = planar_faces(sparse, probe);

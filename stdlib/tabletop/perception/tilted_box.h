@@ -17,8 +17,16 @@
 
 namespace ksmc::stdlib::tabletop::perception {
 
+// The face options of the tilted fit: a tilted face is often seen at a slant, in rows up to
+// twice the growing radius apart (FaceOptions::row_factor).
+inline FaceOptions slanted_faces() {
+  FaceOptions f;
+  f.row_factor = 2.0;
+  return f;
+}
+
 struct TiltOptions {
-  FaceOptions faces;
+  FaceOptions faces = slanted_faces();
   double min_tilt_deg = 5.0;        // a face this far from both horizontal and vertical is tilted
   std::size_t min_face_points = 80; // smaller tilted faces do not start a tilted box
   double min_face_side = 0.03;      // m, nor do faces narrower than this (bevels, a carton's gable top)
