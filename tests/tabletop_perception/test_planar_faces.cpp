@@ -1,7 +1,9 @@
 // planar_faces: a face seen at a slant, sampled in rows farther apart than the growing
-// radius, is one face when rows may be joined (FaceOptions::row_factor).
+// radius, is one face when rows may be joined (FaceOptions::row_factor); a face cut in two by
+// a seam is joined again (join_coplanar_faces).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "stdlib/tabletop/perception/planar_faces.h"
@@ -59,4 +61,35 @@ TEST_CASE("planar faces: a parallel face a row's width away on another plane is 
     const bool a = f.points.front() < static_cast<int>(first), b = f.points.back() >= static_cast<int>(first);
     CHECK(!(a && b));  // no face holds points of both
   }
+}
+
+TEST_CASE("planar faces: a face cut in two by a seam is joined, a parallel face off its plane is not",
+          "[perception][tilted]") {
+  // A 6 x 11 cm face turned 25 degrees about x, rows 4 mm apart but 12 mm apart across its
+  // middle (an occluder's edge): two faces. A third beside it, parallel, 6 mm off its plane.
+  const Eigen::Matrix3d r = Eigen::AngleAxisd(25.0 * kDeg, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  Points pts;
+  int k = 0;
+  for (double v = -0.05; v <= 0.06 + 1e-12; v += 0.004) {
+    if (std::abs(v) < 0.004) continue;  // rows at -6 and +6 mm either side
+    for (double u = -0.03; u <= 0.03 + 1e-12; u += 0.003, ++k)
+      pts.push_back(r * Eigen::Vector3d(u, v, 0.0003 * std::sin(1.7 * k)) + Eigen::Vector3d(0.0, 0.0, 0.1));
+  }
+  const std::size_t split = pts.size();
+  for (double v = -0.05; v <= 0.06 + 1e-12; v += 0.004)
+    for (double u = 0.045; u <= 0.08 + 1e-12; u += 0.003, ++k)
+      pts.push_back(r * Eigen::Vector3d(u, v, 0.006 + 0.0003 * std::sin(1.7 * k)) + Eigen::Vector3d(0.0, 0.0, 0.1));
+  FaceOptions o;
+  o.row_factor = 2.0;
+  std::vector<Face> faces = planar_faces(pts, o);
+  REQUIRE(faces.size() == 3);
+  std::vector<Face> kept = faces;
+  join_coplanar_faces(pts, kept, o, [](const Face&) { return false; });
+  CHECK(kept.size() == 3);
+  join_coplanar_faces(pts, faces, o, [](const Face&) { return true; });
+  REQUIRE(faces.size() == 2);
+  CHECK(faces[0].points.size() == split);  // the two halves, largest first
+  CHECK(std::is_sorted(faces[0].points.begin(), faces[0].points.end()));
+  CHECK(faces[1].points.front() >= static_cast<int>(split));  // the face off the plane stays apart
+  CHECK(std::abs(faces[0].normal.dot(r.col(2))) > std::cos(1.0 * kDeg));
 }

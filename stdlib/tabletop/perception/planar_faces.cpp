@@ -8,6 +8,34 @@
 
 namespace ksmc::stdlib::tabletop::perception {
 
+namespace {
+
+// Largest first, ties by first index (deterministic).
+void sort_largest_first(std::vector<Face>& faces) {
+  std::stable_sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) {
+    return a.points.size() > b.points.size() || (a.points.size() == b.points.size() && a.points.front() < b.points.front());
+  });
+}
+
+// Whether faces a and b are parts of one face (join_coplanar_faces).
+bool one_face(const Points& points, const Face& a, const Face& b, const FaceOptions& o) {
+  if (std::abs(a.normal.dot(b.normal)) < std::cos(o.max_angle_deg * 3.14159265358979323846 / 180.0)) return false;
+  if (std::abs((b.centroid - a.centroid).dot(a.normal)) > o.plane_tolerance ||
+      std::abs((a.centroid - b.centroid).dot(b.normal)) > o.plane_tolerance)
+    return false;
+  Points of_b;
+  of_b.reserve(b.points.size());
+  for (int j : b.points) of_b.push_back(points[static_cast<std::size_t>(j)]);
+  const PointGrid near_b(of_b, std::max(o.row_factor, 1.0) * o.grow_radius);
+  std::vector<int> nb;
+  return std::any_of(a.points.begin(), a.points.end(), [&](int i) {
+    near_b.neighbours(points[static_cast<std::size_t>(i)], nb);
+    return !nb.empty();
+  });
+}
+
+}  // namespace
+
 std::vector<Face> planar_faces(const Points& points, const FaceOptions& o) {
   const std::size_t n = points.size();
   std::vector<Eigen::Vector3d> normal(n, Eigen::Vector3d::UnitZ());
@@ -73,9 +101,7 @@ std::vector<Face> planar_faces(const Points& points, const FaceOptions& o) {
     f.points = std::move(region);
     faces.push_back(std::move(f));
   }
-  std::stable_sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) {
-    return a.points.size() > b.points.size() || (a.points.size() == b.points.size() && a.points.front() < b.points.front());
-  });
+  sort_largest_first(faces);
   for (std::size_t i = 0; i < n; ++i) taken[i] = 0;
   for (const Face& f : faces)
     for (int j : f.points) taken[static_cast<std::size_t>(j)] = 1;
@@ -103,10 +129,32 @@ std::vector<Face> planar_faces(const Points& points, const FaceOptions& o) {
   // the free points next to it that lie on its plane, so that faces reach the box's edges.
   extend(grid, [](std::size_t, const Face&) { return true; });
   for (Face& f : faces) std::sort(f.points.begin(), f.points.end());
-  std::stable_sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) {
-    return a.points.size() > b.points.size() || (a.points.size() == b.points.size() && a.points.front() < b.points.front());
-  });
+  sort_largest_first(faces);
   return faces;
+}
+
+void join_coplanar_faces(const Points& points, std::vector<Face>& faces, const FaceOptions& o,
+                         const std::function<bool(const Face&)>& may_join) {
+  bool joined = false;
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    if (!may_join(faces[i])) continue;
+    for (std::size_t j = i + 1; j < faces.size(); ++j) {
+      if (!may_join(faces[j]) || !one_face(points, faces[i], faces[j], o)) continue;
+      Face& a = faces[i];
+      const Face& b = faces[j];
+      const auto na = static_cast<double>(a.points.size()), nb = static_cast<double>(b.points.size());
+      const Eigen::Vector3d bn = a.normal.dot(b.normal) < 0.0 ? Eigen::Vector3d(-b.normal) : b.normal;
+      a.normal = (na * a.normal + nb * bn).normalized();
+      a.centroid = (na * a.centroid + nb * b.centroid) / (na + nb);
+      a.points.insert(a.points.end(), b.points.begin(), b.points.end());
+      std::sort(a.points.begin(), a.points.end());
+      faces.erase(faces.begin() + static_cast<std::ptrdiff_t>(j));
+      j = i;  // the joined face may reach one it did not before
+      joined = true;
+    }
+  }
+  if (!joined) return;
+  sort_largest_first(faces);
 }
 
 }  // namespace ksmc::stdlib::tabletop::perception

@@ -7,6 +7,7 @@
 // small patches belong to no face.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "stdlib/tabletop/perception/cloud_io.h"
@@ -38,5 +39,14 @@ struct Face {
 // centroid are those of the region grown by normals; the rows and edge points it takes after
 // that do not move them.
 std::vector<Face> planar_faces(const Points& points, const FaceOptions& options = {});
+
+// A face cut in two by a seam of points with mixed normals (an occluder's edge, a band of
+// sparse rows) is two faces. Joins the faces of `faces` (of `points`) for which `may_join`
+// holds, two by two, when their normals agree (max_angle_deg), each lies on the other's plane
+// (plane_tolerance, at their centroids) and they come within max(row_factor, 1) x grow_radius
+// of each other. A joined face's normal and centroid are its parts' means weighted by their
+// points; the faces stay largest first.
+void join_coplanar_faces(const Points& points, std::vector<Face>& faces, const FaceOptions& options,
+                         const std::function<bool(const Face&)>& may_join);
 
 }  // namespace ksmc::stdlib::tabletop::perception

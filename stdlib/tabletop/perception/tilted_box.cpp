@@ -284,7 +284,9 @@ std::optional<TiltedFit> fit_tilted_box(const Points& points, const TiltOptions&
 
   // The tilted faces from the largest, then (with none that gives a box) the vertical faces
   // whose outline leans: the first whose box has its points on its faces.
-  const std::vector<Face> faces = planar_faces(points, o.faces);
+  std::vector<Face> faces = planar_faces(points, o.faces);
+  if (o.join_split)
+    join_coplanar_faces(points, faces, o.faces, [&](const Face& f) { return is_tilted(f.normal, o.min_tilt_deg * kDeg); });
   bool tilted_face = false;
   for (const Face& f : faces) {
     if (!tilted_seed(points, f, o, o.min_face_points)) continue;

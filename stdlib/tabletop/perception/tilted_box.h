@@ -28,6 +28,9 @@ inline FaceOptions slanted_faces() {
 struct TiltOptions {
   FaceOptions faces = slanted_faces();
   double min_tilt_deg = 5.0;        // a face this far from both horizontal and vertical is tilted
+  bool join_split = true;           // tilted faces cut in two by a seam are one (join_coplanar_faces;
+                                    // not the vertical and horizontal ones: an upright neighbour's
+                                    // face cut by the leaning box's shadow stays two)
   std::size_t min_face_points = 80; // smaller tilted faces do not start a tilted box
   double min_face_side = 0.03;      // m, nor do faces narrower than this (bevels, a carton's gable top)
   double perpendicular_deg = 12.0;  // faces of one box: normals perpendicular within this
