@@ -1,6 +1,7 @@
 // ksmc-perception-sim [--scenes N] [--objects A..B] [--seed S] [--sigma M] [--missing R] [--stride K] [--upright]
 //                     [--footprint-only] [--fixed-tolerance] [--isotropic] [--no-shadow-merge] [--whole-faces]
-//                     [--no-side-steps] [--no-hidden-bottom] [--no-hidden-reach] [--no-lean-seat] [--no-seen-under] [--no-occluded-gap]
+//                     [--no-side-steps] [--no-hidden-bottom] [--no-hidden-reach] [--no-tilted-foot] [--no-lean-seat]
+//                     [--no-seen-under] [--no-occluded-gap]
 //                     [--whole-tops] [--no-close-gap] [--keep-strips] [--visible V] [--verbose] [--dump DIR]
 // Renders depth clouds of generated scenes (three families), runs the point-cloud front end
 // and prints, per family, how well the boxes are recovered (camera frame, nearest-centre
@@ -89,6 +90,7 @@ int main(int argc, char** argv) {
                              // the edge and filled-rows tests (tilted_box.h)
   bool no_side_steps = false;  // boxes not split where their side faces step: the figures before side_steps.h
   bool no_hidden_bottom = false;  // boxes starting above the table stay there: the figures before hidden_bottom.h
+  bool no_tilted_foot = false;    // a tilted box whose foot is hidden keeps its fit: the figures before tilted_foot.h
   bool no_hidden_reach = false;   // a box under one that overhangs it keeps its fit: the figures before hidden_reach.h
   bool no_lean_seat = false;      // a tilted box cutting into an upright one keeps its fit: the figures before lean_seat.h
   bool keep_strips = false;  // thin boxes on larger ones stay: before face_strip.h
@@ -110,6 +112,7 @@ int main(int argc, char** argv) {
                          : a == "--no-side-steps"   ? &no_side_steps
                          : a == "--no-hidden-bottom" ? &no_hidden_bottom
                          : a == "--no-hidden-reach" ? &no_hidden_reach
+                         : a == "--no-tilted-foot" ? &no_tilted_foot
                          : a == "--no-lean-seat"    ? &no_lean_seat
                          : a == "--no-seen-under"   ? &no_seen_under
                          : a == "--no-occluded-gap" ? &no_occluded_gap
@@ -171,6 +174,7 @@ int main(int argc, char** argv) {
         if (no_side_steps) opt.fit.stacks.sides.enabled = false;
         if (no_hidden_bottom) opt.hidden_bottom.enabled = false;
         if (no_hidden_reach) opt.hidden_reach.enabled = false;
+        if (no_tilted_foot) opt.tilted_foot.enabled = false;
         if (no_lean_seat) opt.lean_seat.enabled = false;
         if (no_seen_under) opt.seen_under.enabled = false;
         if (no_occluded_gap) opt.occluded_gap.enabled = false;

@@ -109,6 +109,7 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
   HiddenBottomOptions hidden = options.hidden_bottom;
   OccludedGapOptions gap = options.occluded_gap;
   HiddenReachOptions reach = options.hidden_reach;
+  TiltedFootOptions foot = options.tilted_foot;
   if (options.clusters.tolerance > 0.0 && clusters_options.tolerance > options.clusters.tolerance) {
     const double rho = clusters_options.tolerance / options.clusters.tolerance;
     under.min_rays = fewer_points(under.min_rays, rho);
@@ -116,6 +117,7 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
     hidden.min_rays = fewer_points(hidden.min_rays, rho);
     reach.min_rays = fewer_points(reach.min_rays, rho);
     gap.min_rays = fewer_points(gap.min_rays, rho);
+    foot.min_rays = fewer_points(foot.min_rays, rho);
   }
   for (std::size_t i = 0; i < boxes.size(); ++i) {  // boxes the sensor saw under are cut
     const std::size_t c = cluster_of[i];
@@ -131,6 +133,7 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
   }
   grow_hidden_bottoms(boxes, rays, fit.box.float_gap, hidden);
   grow_hidden_reach(boxes, rays, reach);
+  grow_tilted_feet(boxes, rays, foot);
   // Box j goes into box i: it is removed, and its points become box i's cluster's when it was
   // its own cluster's only box.
   const auto drop_into = [&](std::size_t j, std::size_t i) {

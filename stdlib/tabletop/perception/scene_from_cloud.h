@@ -23,6 +23,7 @@
 #include "stdlib/tabletop/perception/shadow_merge.h"
 #include "stdlib/tabletop/perception/stack_split.h"
 #include "stdlib/tabletop/perception/table_plane.h"
+#include "stdlib/tabletop/perception/tilted_foot.h"
 #include "stdlib/tabletop/scene.h"
 
 namespace ksmc::stdlib::tabletop::perception {
@@ -39,6 +40,7 @@ struct CloudOptions {
   SeenUnderOptions seen_under;        // boxes from the table the sensor saw under are cut (seen_under.h)
   HiddenBottomOptions hidden_bottom;  // boxes whose foot is hidden grow down to the table (hidden_bottom.h)
   HiddenReachOptions hidden_reach;    // a box under one that overhangs it grows where it is hidden (hidden_reach.h)
+  TiltedFootOptions tilted_foot;      // a tilted box whose foot is hidden grows down to the table (tilted_foot.h)
   OccludedGapOptions occluded_gap;    // the two ends of a box something lies across are one (occluded_gap.h)
   FaceStripOptions face_strip;        // a thin box on a larger one is a strip of its face: dropped (face_strip.h)
   LeanSeatOptions lean_seat;          // a tilted box cutting into an upright one is cut back where unseen (lean_seat.h)

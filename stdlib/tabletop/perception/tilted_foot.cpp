@@ -1,0 +1,61 @@
+#include "stdlib/tabletop/perception/tilted_foot.h"
+
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "stdlib/tabletop/obb.h"
+#include "stdlib/tabletop/obb_sat.h"
+#include "stdlib/tabletop/perception/hidden_bottom.h"
+
+namespace ksmc::stdlib::tabletop::perception {
+
+int grow_tilted_feet(std::vector<UprightBox>& boxes, const RayIndex& rays, const TiltedFootOptions& o) {
+  if (!o.enabled) return 0;
+  int grown = 0;
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    if (is_upright(boxes[i])) continue;
+    const Obb fit = Obb::from_pose(boxes[i].pose, boxes[i].size);
+    const double low = fit.min_z();
+    if (low <= o.gap) continue;
+    std::optional<UprightBox> best;
+    double least = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d axis = fit.axes.col(k);
+      const double slope = std::abs(axis.z());
+      if (slope < o.min_slope) continue;
+      const double growth = low / slope;
+      if (growth > o.max_growth || growth >= least) continue;
+      const double down = axis.z() > 0.0 ? -1.0 : 1.0;  // the side of axis k that is lower
+      UprightBox candidate = boxes[i];
+      candidate.size(k) += growth;
+      candidate.pose.t += 0.5 * down * growth * axis;
+      bool cuts = false;
+      const Obb solid = Obb::from_pose(candidate.pose, candidate.size);
+      for (std::size_t j = 0; j < boxes.size() && !cuts; ++j) {
+        if (j == i) continue;
+        const SatResult r = obb_sat(solid, Obb::from_pose(boxes[j].pose, boxes[j].size));
+        cuts = r.overlapping && r.depth > o.clear;
+      }
+      if (cuts) continue;
+      Obb part;  // what the box grows into, inset
+      part.axes = fit.axes;
+      part.half = fit.half - Eigen::Vector3d::Constant(o.inset);
+      part.half(k) = 0.5 * growth - o.inset;
+      if (part.half.minCoeff() <= 0.0) continue;
+      part.center = fit.center + down * (fit.half(k) + 0.5 * growth) * axis;
+      const SpaceUnder seen = rays_meeting(part, {fit}, rays, o.margin);
+      const double all = static_cast<double>(seen.before + seen.inside + seen.through);
+      if (seen.before < o.min_rays || static_cast<double>(seen.before) < o.hidden_share * all) continue;
+      least = growth;
+      best = candidate;
+    }
+    if (best) {
+      boxes[i] = *best;
+      ++grown;
+    }
+  }
+  return grown;
+}
+
+}  // namespace ksmc::stdlib::tabletop::perception
