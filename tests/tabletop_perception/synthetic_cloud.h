@@ -1,6 +1,7 @@
 // Synthetic clouds for the perception tests: a dense table grid and box surfaces.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -36,6 +37,26 @@ void for_each_face_point(const Eigen::Vector3d& h, double step, Keep keep, F f) 
           f(local);
         }
     }
+}
+
+// The height, relative to its centre, of the lowest corner of a box of `size` turned by
+// `rotation` (at most 0).
+inline double lowest_corner(const Eigen::Matrix3d& rotation, const Eigen::Vector3d& size) {
+  double low = 0.0;
+  for (int c = 0; c < 8; ++c) {
+    const Eigen::Vector3d corner((c & 1 ? 0.5 : -0.5) * size.x(), (c & 2 ? 0.5 : -0.5) * size.y(), (c & 4 ? 0.5 : -0.5) * size.z());
+    low = std::min(low, (rotation * corner).z());
+  }
+  return low;
+}
+
+// A box of `size` turned by `rotation`, its centre over (x, y), its lowest corner on z = 0.
+inline Eigen::Isometry3d on_table(const Eigen::Matrix3d& rotation, const Eigen::Vector3d& size, double x = 0.0,
+                                  double y = 0.0) {
+  Eigen::Isometry3d p = Eigen::Isometry3d::Identity();
+  p.linear() = rotation;
+  p.translation() = Eigen::Vector3d(x, y, -lowest_corner(rotation, size));
+  return p;
 }
 
 // Surface grid of an upright box standing on z = 0 at (cx, cy) with yaw; the bottom face is left out.

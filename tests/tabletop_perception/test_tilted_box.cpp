@@ -11,6 +11,8 @@
 using namespace ksmc::stdlib::tabletop::perception;
 using ksmc::stdlib::tabletop::FreeSpace;
 using ksmc::tests::perception::add_visible_box;
+using ksmc::tests::perception::lowest_corner;
+using ksmc::tests::perception::on_table;
 using ksmc::tests::perception::cast_view;
 using ksmc::tests::perception::CastBox;
 using ksmc::tests::perception::upright_box;
@@ -31,27 +33,7 @@ Eigen::Isometry3d posed(double yaw, double tilt, const Eigen::Vector3d& t) {
 // A box turned by `tilt` about its x axis and `yaw` about the vertical, its lowest corner
 // on the table (z = 0) at (0, y).
 Eigen::Isometry3d resting(double yaw, double tilt, const Eigen::Vector3d& size, double y = 0.0) {
-  Eigen::Isometry3d p = posed(yaw, tilt, Eigen::Vector3d::Zero());
-  double low = 0.0;
-  for (int c = 0; c < 8; ++c) {
-    const Eigen::Vector3d corner((c & 1 ? 0.5 : -0.5) * size.x(), (c & 2 ? 0.5 : -0.5) * size.y(), (c & 4 ? 0.5 : -0.5) * size.z());
-    low = std::min(low, (p.linear() * corner).z());
-  }
-  p.translation() = Eigen::Vector3d(0.0, y, -low);
-  return p;
-}
-
-// `size` turned by `rotation`, centred over the origin, its lowest corner on the table.
-Eigen::Isometry3d resting_on_table(const Eigen::Matrix3d& rotation, const Eigen::Vector3d& size) {
-  double low = 0.0;
-  for (int c = 0; c < 8; ++c) {
-    const Eigen::Vector3d corner((c & 1 ? 0.5 : -0.5) * size.x(), (c & 2 ? 0.5 : -0.5) * size.y(), (c & 4 ? 0.5 : -0.5) * size.z());
-    low = std::min(low, (rotation * corner).z());
-  }
-  Eigen::Isometry3d p = Eigen::Isometry3d::Identity();
-  p.linear() = rotation;
-  p.translation() = Eigen::Vector3d(0.0, 0.0, -low);
-  return p;
+  return on_table(posed(yaw, tilt, Eigen::Vector3d::Zero()).linear(), size, 0.0, y);
 }
 
 BoxError error_of(const UprightBox& b, const Eigen::Isometry3d& truth, const Eigen::Vector3d& size) {
@@ -208,11 +190,7 @@ Eigen::Isometry3d leaning_against(const Eigen::Matrix3d& rotation, const Eigen::
                                   const Eigen::Vector3d& along, const Eigen::Vector3d& contact) {
   Eigen::Isometry3d p = Eigen::Isometry3d::Identity();
   p.linear() = rotation;
-  double low = 0.0;
-  for (int c = 0; c < 8; ++c) {
-    const Eigen::Vector3d corner((c & 1 ? 0.5 : -0.5) * size.x(), (c & 2 ? 0.5 : -0.5) * size.y(), (c & 4 ? 0.5 : -0.5) * size.z());
-    low = std::min(low, (rotation * corner).z());
-  }
+  const double low = lowest_corner(rotation, size);
   const Eigen::Vector3d back = -rotation.col(2);  // outward normal of the back face
   Eigen::Vector3d t = at;
   t.z() = -low;
@@ -309,7 +287,7 @@ TEST_CASE("tilted box: a neighbour's face turned off the leaning box's side does
   r.col(2) = Eigen::Vector3d(std::cos(tilt), 0.0, std::sin(tilt));
   r.col(1) = Eigen::Vector3d::UnitY();
   r.col(0) = r.col(1).cross(r.col(2));
-  const Eigen::Isometry3d carton = resting_on_table(r, carton_size);
+  const Eigen::Isometry3d carton = on_table(r, carton_size);
   const double foot_x = -0.5 * carton_size.z() * std::cos(tilt);
   const CastBox beside =
       upright_box(foot_x + 0.04, 0.035 + 0.015 + 0.0325, 0.0, Eigen::Vector3d(0.139, 0.065, 0.069), -7.0 * kDeg);

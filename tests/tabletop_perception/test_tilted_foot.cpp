@@ -2,7 +2,6 @@
 // where the rays say its lower part is hidden; seen empty, or cutting into a box, it does not.
 #include <catch2/catch.hpp>
 
-#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -16,6 +15,7 @@ using ksmc::stdlib::tabletop::Obb;
 using ksmc::stdlib::tabletop::RayIndex;
 using ksmc::tests::perception::CastBox;
 using ksmc::tests::perception::cast_view;
+using ksmc::tests::perception::on_table;
 using ksmc::tests::perception::upright_box;
 
 namespace {
@@ -27,15 +27,7 @@ const Eigen::Vector3d kSensor(0.0, -0.8, 0.6);
 // edge on the table, its centre over the origin.
 CastBox leaning() {
   const Eigen::Vector3d size(0.06, 0.05, 0.24);
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  pose.linear() = Eigen::AngleAxisd(-25.0 * kDeg, Eigen::Vector3d::UnitX()).toRotationMatrix();
-  double low = 0.0;
-  for (int c = 0; c < 8; ++c) {
-    const Eigen::Vector3d corner((c & 1 ? 0.5 : -0.5) * size.x(), (c & 2 ? 0.5 : -0.5) * size.y(), (c & 4 ? 0.5 : -0.5) * size.z());
-    low = std::min(low, (pose.linear() * corner).z());
-  }
-  pose.translation() = Eigen::Vector3d(0.0, 0.0, -low);
-  return {pose, size};
+  return {on_table(Eigen::AngleAxisd(-25.0 * kDeg, Eigen::Vector3d::UnitX()).toRotationMatrix(), size), size};
 }
 
 UprightBox as_box(const CastBox& c) {
