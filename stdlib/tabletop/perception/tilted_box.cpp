@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "stdlib/tabletop/perception/footprint.h"
 #include "stdlib/tabletop/perception/point_grid.h"
@@ -205,6 +206,30 @@ std::optional<TiltedFit> box_of_seed(const Points& points, const std::vector<Fac
     }
     box_faces.push_back(&f);
     touching.push_back(near);
+  }
+  // Two faces of one box meet along an edge and span it alike: a face that runs past the seed
+  // along their common edge by more than max_overreach at the upper end is a taller neighbour's
+  // face flush with the box's (an upright carton's front in the plane of the side of a box
+  // leaning on it). Past the lower end it may be the wall under a sloping top (a carton's gable
+  // roof): kept, and the box then holds that wall inside it (max_interior). Along a level edge
+  // both ends count.
+  if (o.max_overreach > 0.0) {
+    const auto span = [&](const Face& f, const Eigen::Vector3d& e) {
+      std::vector<double> t;
+      t.reserve(f.points.size());
+      for (int i : f.points) t.push_back(points[static_cast<std::size_t>(i)].dot(e));
+      return std::pair{quantile(t, 0.01), quantile(t, 0.99)};
+    };
+    std::vector<const Face*> kept{seed};
+    for (std::size_t k = 1; k < box_faces.size(); ++k) {
+      Eigen::Vector3d e = seed->normal.cross(box_faces[k]->normal).normalized();
+      if (e.z() < 0.0) e = -e;  // rising along e
+      const auto [s0, s1] = span(*seed, e);
+      const auto [f0, f1] = span(*box_faces[k], e);
+      const bool level = e.z() < std::sin(o.min_tilt_deg * kDeg);
+      if ((!level || f0 >= s0 - o.max_overreach) && f1 <= s1 + o.max_overreach) kept.push_back(box_faces[k]);
+    }
+    box_faces = std::move(kept);
   }
   // A vertical seed gives the box's tilt by its outline, and no thickness: another face must.
   if (by_outline && box_faces.size() < 2) return std::nullopt;

@@ -38,6 +38,8 @@ struct TiltOptions {
                                     // (edges are in no face: two normal radii apart)
   double side_tolerance = 0.005;    // m; two faces of one box each lie on one side of the other's plane
   double edge_gap = 0.012;          // m; ... and each comes this close to the other's plane (their edge)
+  double max_overreach = 0.03;      // m; ... and runs past the seed's upper end along that edge by at most
+                                    // this (both ends along a level edge; 0: off)
   double trim = 0.003;              // quantile pulled in on each side of each extent
   double own_margin = 0.008;        // m, cluster points this close to the box are its own
   double min_size = 0.005;          // m
