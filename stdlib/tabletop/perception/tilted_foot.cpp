@@ -27,28 +27,28 @@ int grow_tilted_feet(std::vector<UprightBox>& boxes, const RayIndex& rays, const
       const double growth = low / slope;
       if (growth > o.max_growth || growth >= least) continue;
       const double down = axis.z() > 0.0 ? -1.0 : 1.0;  // the side of axis k that is lower
-      UprightBox candidate = boxes[i];
-      candidate.size(k) += growth;
-      candidate.pose.t += 0.5 * down * growth * axis;
-      bool cuts = false;
-      const Obb solid = Obb::from_pose(candidate.pose, candidate.size);
+      Obb added;  // what the box grows into
+      added.axes = fit.axes;
+      added.half = fit.half;
+      added.half(k) = 0.5 * growth;
+      added.center = fit.center + down * (fit.half(k) + 0.5 * growth) * axis;
+      bool cuts = false;  // the box may already cut into the one it leans on (lean_seat.h comes later)
       for (std::size_t j = 0; j < boxes.size() && !cuts; ++j) {
         if (j == i) continue;
-        const SatResult r = obb_sat(solid, Obb::from_pose(boxes[j].pose, boxes[j].size));
+        const SatResult r = obb_sat(added, Obb::from_pose(boxes[j].pose, boxes[j].size));
         cuts = r.overlapping && r.depth > o.clear;
       }
       if (cuts) continue;
-      Obb part;  // what the box grows into, inset
-      part.axes = fit.axes;
-      part.half = fit.half - Eigen::Vector3d::Constant(o.inset);
-      part.half(k) = 0.5 * growth - o.inset;
+      Obb part = added;  // inset for the rays
+      part.half -= Eigen::Vector3d::Constant(o.inset);
       if (part.half.minCoeff() <= 0.0) continue;
-      part.center = fit.center + down * (fit.half(k) + 0.5 * growth) * axis;
       const SpaceUnder seen = rays_meeting(part, {fit}, rays, o.margin);
       const double all = static_cast<double>(seen.before + seen.inside + seen.through);
       if (seen.before < o.min_rays || static_cast<double>(seen.before) < o.hidden_share * all) continue;
       least = growth;
-      best = candidate;
+      best = boxes[i];
+      best->size(k) += growth;
+      best->pose.t += 0.5 * down * growth * axis;
     }
     if (best) {
       boxes[i] = *best;

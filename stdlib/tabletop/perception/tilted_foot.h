@@ -7,7 +7,8 @@
 // box's cross-section over the added length, inset by `inset`) must be hidden, as for an
 // upright box's foot (hidden_bottom.h): at least `min_rays` rays end before it and they are at
 // least `hidden_share` of the rays that meet it, the rays to the box's own points left out. It
-// must not cut into another box deeper than `clear` (a box propped on another stays propped).
+// must not cut into another box deeper than `clear` (a box propped on another stays propped;
+// the box itself may cut the box it leans on, which lean_seat.h, run later, mends).
 // Of the axes that pass, the least growth is taken; an axis less steep than `min_slope` is not
 // tried (a few mm of height would take a long growth), nor a growth over `max_growth`.
 #pragma once
@@ -29,7 +30,7 @@ struct TiltedFootOptions {
   double margin = 0.01;       // m, a ray ending this close to the part ends in it
   std::size_t min_rays = 20;
   double hidden_share = 0.9;
-  double clear = 0.003;       // m, the grown box cuts no other box deeper than this
+  double clear = 0.003;       // m, the part grown into cuts no other box deeper than this
 };
 
 // Grows the tilted boxes of `boxes` (table frame) whose lowest corner is above the table where
