@@ -6,7 +6,7 @@ set -euo pipefail
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 PACKAGES=(
-  build-essential cmake pkg-config
+  build-essential cmake pkg-config lld
   antlr4 libantlr4-runtime-dev
   libeigen3-dev libopencv-dev libpcl-dev libopenmpi-dev
   libfmt-dev catch2 nlohmann-json3-dev libcli11-dev libyaml-cpp-dev libtbb-dev
