@@ -1,6 +1,6 @@
 // A room segmentation's post-step (segmentation.png): free space that no unit explains and that
 // the nearest-space fill reached only through a doorway is a space of its own. Defect it
-// addresses (docs/indoor_knowledge.md, "Spaces behind a doorway"): a corridor about 1 m wide
+// addresses (docs/indoor_knowledge_segmentation.md, "Spaces behind a doorway"): a corridor about 1 m wide
 // that the chain left without a unit has no cell over 0.6 m from a wall, so no core seeds it;
 // the fill then hands it, door by door, to the offices beside it, and each office segment
 // holds a stretch of corridor.

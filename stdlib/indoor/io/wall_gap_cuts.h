@@ -1,5 +1,5 @@
 // A room segmentation's post-step (segmentation.png): a segment that a straight wall line with
-// a gap crosses is two spaces. Defect it addresses (docs/indoor_knowledge.md, "Open office
+// a gap crosses is two spaces. Defect it addresses (docs/indoor_knowledge_segmentation.md, "Open office
 // fronts"): a row of offices whose door side is open to the corridor over 2-3 m (wider than a
 // door, so the chain's `@one_space` rule calls office and corridor one space) ends up in one
 // unit; a person, and the Bormann et al. ground truth, draw the room boundary along the line
@@ -18,7 +18,7 @@
 //
 // Thin walls at any angle (thin_walls.h: partitions at most 0.4 m thick with free space on both
 // sides, found as Hough lines, so one-cell walls drawn slightly off the grid axes count) give
-// cuts too (docs/indoor_knowledge.md, "Partitions with wide openings"):
+// cuts too (docs/indoor_knowledge_segmentation.md, "Partitions with wide openings"):
 //   * the gap between two pieces of one wall line, up to kMaxGap, when it holds only free,
 //     labelled cells (a corridor with its own walls between two collinear partitions is no gap);
 //   * beyond a wall line's free end, the free, labelled run along the line up to kMaxEndGap
