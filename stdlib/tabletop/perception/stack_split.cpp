@@ -172,6 +172,7 @@ std::vector<UprightBox> fit_stacked_boxes(const Points& points, const BoxFitOpti
       }
       std::vector<UprightBox> fitted;
       if (covered(column, under) >= o.min_support ||
+          (o.centre_inset >= 0.0 && inside(under, column.center, -o.centre_inset)) ||
           (o.free_space && seen != nullptr && seen_through_below(column, below, parts[k].size(), o, *seen)) ||
           steps_at(reach, below, o)) {  // resting on the rest: bottom at the plateau below
         any_rests = true;

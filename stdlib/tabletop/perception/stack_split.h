@@ -24,6 +24,11 @@ struct StackOptions {
   double peak_contrast = 2.0;    // plateau cells / cells of the bins beside it (tilted faces: 0.75)
   double column_margin = 0.006;  // m, the upper box's column is its rectangle grown by this
   double min_support = 0.5;      // share of the upper footprint over the rest that means "stacked"
+  // A top whose centre lies over the rest's rectangle, at least `centre_inset` inside it, rests
+  // on the rest however little of its footprint that covers: standing on the table there, it
+  // would pass through the lower box (a toothpaste lying across a butter box covers 35 % of
+  // its footprint with it). Off (negative): the share alone, as before stop 44.
+  double centre_inset = 0.01;    // m
   std::size_t min_points = 40;   // a part with fewer points is dropped
   // Free-space test of "stands on the table" (off: the footprint test alone, as before it
   // existed; it also needs the `seen` argument): the column below the lower plateau, inset by
