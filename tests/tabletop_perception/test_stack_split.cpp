@@ -1,6 +1,6 @@
 // One cluster, several boxes: a box resting on a box (also one overhanging it: the free-space
-// test), a box lying across a narrower one (its centre over it), a lower box whose width a
-// resting box covers, two touching neighbours of different
+// test), a box lying across a narrower one (its centre over it) or hiding all but a sliver of
+// it (its faces stop at the plateau), a lower box whose width a resting box covers, two touching neighbours of different
 // heights, and a tilted box that must stay one box.
 #include <catch2/catch.hpp>
 
@@ -132,6 +132,42 @@ TEST_CASE("stack split: a box lying across a narrower box rests on it (its centr
   // By the share alone (before stop 44) it stood on the table.
   o.centre_inset = -1.0;
   const auto old = fit_stacked_boxes(v.cluster, {}, o);
+  REQUIRE(old.size() == 2);
+  CHECK(old[1].pose.t.z() - 0.5 * old[1].size.z() == Approx(0.0).margin(0.005));
+}
+
+TEST_CASE("stack split: a box hiding all but a sliver of the box it lies on rests on it", "[perception][stack]") {
+  // Lower box 10 x 7 x 3 cm; the upper box 12 x 6 x 4.5 cm lies on it, shifted 2 cm away from
+  // the sensor, so the lower box shows only a 2.5 cm strip in front (none of the 50 % share, the
+  // centre not over it). The upper box's side faces stop at 3 cm, and the sensor, high in front,
+  // sees the space under it only through the upper box's own top (sim seed 1: a juice box lying
+  // on a medicine box came out 75 mm tall for 44). Side steps off: they alone would see the
+  // faces stop here, but not in the sim scenes, where the faces under the box lay in its shadow.
+  const Eigen::Vector3d sensor(0.0, -0.45, 0.6);
+  Points cluster;
+  Points lower;
+  add_box(lower, 0.0, 0.0, 0.0, Eigen::Vector3d(0.10, 0.07, 0.03), 0.003);
+  for (const auto& p : lower)
+    if (p.y() < -0.01) cluster.push_back(p);  // under the upper box nothing is seen
+  Points upper;
+  add_lifted(upper, 0.0, 0.02, 0.0, Eigen::Vector3d(0.12, 0.06, 0.045), 0.03);
+  for (const auto& p : upper)
+    if (p.z() > 0.0301 || p.y() < -0.0099) cluster.push_back(p);  // its bottom: only the overhang
+  FreeSpace seen;
+  seen.sensor = sensor;
+  seen.points = cluster;
+  for (double x = -0.2; x <= 0.2; x += 0.005)
+    for (double y = -0.2; y <= 0.2; y += 0.005)
+      if (std::abs(x) > 0.07 || y < -0.04) seen.points.emplace_back(x, y, 0.0);  // not behind the boxes
+  StackOptions o;
+  o.sides.enabled = false;
+  const auto boxes = fit_stacked_boxes(cluster, {}, o, &seen);
+  REQUIRE(boxes.size() == 2);
+  CHECK(boxes[1].pose.t.z() - 0.5 * boxes[1].size.z() == Approx(0.03).margin(0.006));
+  CHECK(boxes[1].size.z() == Approx(0.045).margin(0.006));
+  // Faces that do not stop (0 points allowed under the plateau) stand it on the table.
+  o.max_points_below = 0;
+  const auto old = fit_stacked_boxes(cluster, {}, o, &seen);
   REQUIRE(old.size() == 2);
   CHECK(old[1].pose.t.z() - 0.5 * old[1].size.z() == Approx(0.0).margin(0.005));
 }

@@ -2,7 +2,7 @@
 //                     [--footprint-only] [--fixed-tolerance] [--isotropic] [--no-shadow-merge] [--whole-faces]
 //                     [--no-side-steps] [--no-hidden-bottom] [--no-hidden-reach] [--no-tilted-foot] [--no-lean-seat]
 //                     [--no-seen-under] [--no-occluded-gap]
-//                     [--whole-tops] [--no-centre-support] [--no-close-gap] [--keep-strips] [--visible V] [--verbose] [--dump DIR]
+//                     [--whole-tops] [--no-centre-support] [--no-shadow-rest] [--no-close-gap] [--keep-strips] [--visible V] [--verbose] [--dump DIR]
 // Renders depth clouds of generated scenes (three families), runs the point-cloud front end
 // and prints, per family, how well the boxes are recovered (camera frame, nearest-centre
 // matching within 5 cm). "in tol" is over all boxes; "vis>=V" repeats it over the boxes
@@ -95,7 +95,8 @@ int main(int argc, char** argv) {
   bool no_lean_seat = false;      // a tilted box cutting into an upright one keeps its fit: the figures before lean_seat.h
   bool keep_strips = false;  // thin boxes on larger ones stay: before face_strip.h
   bool no_close_gap = false;  // a box over another within 15 mm keeps its gap: before HiddenBottomOptions::close_gap
-  bool no_centre_support = false;  // a top rests on the rest only by the share it covers: before stop 44
+  bool no_centre_support = false;
+  bool no_shadow_rest = false;  // a top whose faces stop at the plateau, in its own shadow, stands: before stop 44  // a top rests on the rest only by the share it covers: before stop 44
   bool whole_tops = false;   // the tops above a plateau peeled as one box: before top_parts.h
   bool no_occluded_gap = false;  // the two ends of a box something lies across stay two: before occluded_gap.h
   bool no_seen_under = false;  // boxes from the table stay whole where the sensor saw under them: before seen_under.h
@@ -120,6 +121,7 @@ int main(int argc, char** argv) {
                          : a == "--keep-strips"     ? &keep_strips
                          : a == "--whole-tops"      ? &whole_tops
                          : a == "--no-centre-support" ? &no_centre_support
+                         : a == "--no-shadow-rest"  ? &no_shadow_rest
                          : a == "--no-close-gap"    ? &no_close_gap
                                                     : nullptr;
       if (flag != nullptr) {
@@ -183,6 +185,7 @@ int main(int argc, char** argv) {
         if (keep_strips) opt.face_strip.thin = -1.0;
         if (whole_tops) opt.fit.stacks.separate_tops = false;
         if (no_centre_support) opt.fit.stacks.centre_inset = -1.0;
+        if (no_shadow_rest) opt.fit.stacks.max_points_below = 0;
         if (no_close_gap) opt.hidden_bottom.close_gap = std::numeric_limits<double>::infinity();
         if (whole_faces) {
           opt.fit.tilt.edge_gap = std::numeric_limits<double>::infinity();

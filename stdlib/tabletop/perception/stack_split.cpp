@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <optional>
 
 #include "stdlib/tabletop/perception/footprint.h"
 #include "stdlib/tabletop/perception/top_parts.h"
+#include "stdlib/tabletop/line_of_sight.h"
 
 namespace ksmc::stdlib::tabletop::perception {
 
@@ -77,20 +79,61 @@ double covered(const Rect2& a, const Rect2& b) {
   return in / 400.0;
 }
 
-// True when the sensor saw through where the upper box's column would stand below the
-// lower plateau: rays ended behind that space, so no box stands there.
-bool seen_through_below(const Rect2& column, double below, std::size_t upper_points, const StackOptions& o,
-                        const FreeSpace& seen) {
-  const double height = below - 2.0 * o.seen_inset;
-  if (height <= 0.0 || column.half.x() <= o.seen_inset || column.half.y() <= o.seen_inset) return false;
+// The column under the plateau (inset by seen_inset), as a box.
+Obb column_below(const Rect2& column, double below, double inset) {
   Obb under;
   under.center = Eigen::Vector3d(column.center.x(), column.center.y(), 0.5 * below);
   under.axes.col(0) = Eigen::Vector3d(column.u.x(), column.u.y(), 0.0);
   under.axes.col(1) = Eigen::Vector3d(column.v().x(), column.v().y(), 0.0);
   under.axes.col(2) = Eigen::Vector3d::UnitZ();
-  under.half = Eigen::Vector3d(column.half.x() - o.seen_inset, column.half.y() - o.seen_inset, 0.5 * height);
+  under.half = Eigen::Vector3d(column.half.x() - inset, column.half.y() - inset, 0.5 * below - inset);
+  return under;
+}
+
+// True when the sensor saw through where the upper box's column would stand below the
+// lower plateau: rays ended behind that space, so no box stands there.
+bool seen_through_below(const Rect2& column, double below, std::size_t upper_points, const StackOptions& o,
+                        const FreeSpace& seen) {
+  if (below <= 2.0 * o.seen_inset || column.half.x() <= o.seen_inset || column.half.y() <= o.seen_inset) return false;
   const double limit = std::max(static_cast<double>(o.min_seen_through), o.seen_through_share * static_cast<double>(upper_points));
-  return static_cast<double>(see_through_count(under, seen)) > limit;
+  return static_cast<double>(see_through_count(column_below(column, below, o.seen_inset), seen)) > limit;
+}
+
+// Of the rays toward the column under the plateau that end before reaching it, true when at
+// least as many end on the column's own top part (above the plateau, within the column) as on
+// something outside the column: that space lies in the top's own shadow, not behind a box in
+// front, which would hide a box's lower faces standing on the table.
+bool in_own_shadow(const Rect2& column, double below, const StackOptions& o, const FreeSpace& seen) {
+  if (below <= 2.0 * o.seen_inset || column.half.x() <= o.seen_inset || column.half.y() <= o.seen_inset) return false;
+  const Obb under = column_below(column, below, o.seen_inset);
+  const Eigen::Vector3d sensor = in_box_axes(under, seen.sensor - under.center);
+  std::size_t own = 0, front = 0;
+  for (const auto& p : seen.points) {
+    const Eigen::Vector3d seg = p - seen.sensor;
+    const double len = seg.norm();
+    double enter = 0.0, leave = std::numeric_limits<double>::infinity();
+    if (len <= seen.margin || !slab_span(under, sensor, in_box_axes(under, seg), enter, leave)) continue;
+    if (1.0 >= enter - seen.margin / len) continue;  // reaches the space (or passes it)
+    if (!inside(column, {p.x(), p.y()}, o.column_margin)) ++front;
+    else if (p.z() > below + 0.5 * o.level_gap) ++own;
+  }
+  return own > 0 && own >= front;
+}
+
+// True when the column's side faces stop at the plateau: under it the column holds fewer than
+// `max_points_below` points and fewer than `max_below_share` of what its side faces above the
+// plateau (below the top's last centimetre) would put there at the same density per height.
+bool faces_stop_at(const Points& whole, const Points& top_part, double below, const StackOptions& o) {
+  double top = below;
+  for (const auto& p : top_part) top = std::max(top, p.z());
+  const double lower = below - 0.5 * o.level_gap, upper = below + 0.5 * o.level_gap;
+  std::size_t under = 0, side = 0;
+  for (const auto& p : whole) {
+    under += p.z() < lower;
+    side += p.z() > upper && p.z() < top - o.top_band;
+  }
+  const double expected = static_cast<double>(side) * lower / std::max(top - o.top_band - upper, o.cell);
+  return under < o.max_points_below && static_cast<double>(under) < o.max_below_share * expected;
 }
 
 // True when the column's side faces step at the plateau below (side_steps.h): its faces
@@ -170,11 +213,13 @@ std::vector<UprightBox> fit_stacked_boxes(const Points& points, const BoxFitOpti
         if (inside(column, {p.x(), p.y()}, o.column_margin)) whole.push_back(p);
         if (inside(column, {p.x(), p.y()}, o.sides.max_offset)) reach.push_back(p);
       }
+      const bool faces_stop = faces_stop_at(whole, parts[k], below, o);
       std::vector<UprightBox> fitted;
       if (covered(column, under) >= o.min_support ||
           (o.centre_inset >= 0.0 && inside(under, column.center, -o.centre_inset)) ||
           (o.free_space && seen != nullptr && seen_through_below(column, below, parts[k].size(), o, *seen)) ||
-          steps_at(reach, below, o)) {  // resting on the rest: bottom at the plateau below
+          steps_at(reach, below, o) ||
+          (seen != nullptr && faces_stop && in_own_shadow(column, below, o, *seen))) {  // resting on the rest: bottom at the plateau below
         any_rests = true;
         Points part = parts[k];
         part.insert(part.end(), part_sides[k].begin(), part_sides[k].end());
