@@ -1,8 +1,9 @@
-// Visible share of each box in a simulated depth view (scorer of ksmc-perception-sim): over
-// the renderer's pixel grid, the pixels where the box is the nearest hit among all boxes
-// divided by the pixels whose ray hits it when it is alone. Boxes are on the table, so the
-// table hides none of them. 1 for a box in full view, 0 for a box entirely behind others
-// (or out of the image).
+// Visible share of each box in a simulated depth view (scorer of ksmc-perception-sim): the
+// pixels of the image where the box is the nearest hit among all boxes, divided by the pixels
+// whose ray hits it when it is alone, counted on the image plane extended by one image width
+// and height past each border (so a box the image border cuts is partly unseen). Boxes are on
+// the table, so the table hides none of them. 1 for a box in full view, 0 for a box entirely
+// behind others or out of the image.
 #pragma once
 
 #include <span>
