@@ -95,8 +95,8 @@ int main(int argc, char** argv) {
   bool no_lean_seat = false;      // a tilted box cutting into an upright one keeps its fit: the figures before lean_seat.h
   bool keep_strips = false;  // thin boxes on larger ones stay: before face_strip.h
   bool no_close_gap = false;  // a box over another within 15 mm keeps its gap: before HiddenBottomOptions::close_gap
-  bool no_centre_support = false;
-  bool no_shadow_rest = false;  // a top whose faces stop at the plateau, in its own shadow, stands: before stop 44  // a top rests on the rest only by the share it covers: before stop 44
+  bool no_centre_support = false;  // a top rests on the rest only by the share it covers: before stop 44
+  bool no_shadow_rest = false;  // a top whose faces stop at the plateau, in its own shadow, stands: before stop 44
   bool whole_tops = false;   // the tops above a plateau peeled as one box: before top_parts.h
   bool no_occluded_gap = false;  // the two ends of a box something lies across stay two: before occluded_gap.h
   bool no_seen_under = false;  // boxes from the table stay whole where the sensor saw under them: before seen_under.h
