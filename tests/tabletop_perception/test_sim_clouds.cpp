@@ -100,6 +100,8 @@ TEST_CASE("simulated clouds: a box resting on a box it overhangs is found by the
     o.fit.stacks.free_space = with;
     o.seen_under.enabled = false;  // the later ray passes fix some of the same boxes
     o.hidden_bottom.enabled = false;
+    o.fit.stacks.centre_inset = -1.0;  // so do stop 44's centre and own-shadow tests
+    o.fit.stacks.max_points_below = 0;
   });
   const int boxes = c.boxes;
   const int* within = c.within;  // footprint test alone, with the free-space test
