@@ -79,14 +79,16 @@ double covered(const Rect2& a, const Rect2& b) {
   return in / 400.0;
 }
 
-// The column under the plateau (inset by seen_inset), as a box.
-Obb column_below(const Rect2& column, double below, double inset) {
+// The column under the plateau, inset by `seen_inset` on every side, as a box; none when the
+// inset leaves nothing.
+std::optional<Obb> column_below(const Rect2& column, double below, const StackOptions& o) {
+  if (below <= 2.0 * o.seen_inset || column.half.x() <= o.seen_inset || column.half.y() <= o.seen_inset) return std::nullopt;
   Obb under;
   under.center = Eigen::Vector3d(column.center.x(), column.center.y(), 0.5 * below);
   under.axes.col(0) = Eigen::Vector3d(column.u.x(), column.u.y(), 0.0);
   under.axes.col(1) = Eigen::Vector3d(column.v().x(), column.v().y(), 0.0);
   under.axes.col(2) = Eigen::Vector3d::UnitZ();
-  under.half = Eigen::Vector3d(column.half.x() - inset, column.half.y() - inset, 0.5 * below - inset);
+  under.half = Eigen::Vector3d(column.half.x() - o.seen_inset, column.half.y() - o.seen_inset, 0.5 * below - o.seen_inset);
   return under;
 }
 
@@ -94,9 +96,10 @@ Obb column_below(const Rect2& column, double below, double inset) {
 // lower plateau: rays ended behind that space, so no box stands there.
 bool seen_through_below(const Rect2& column, double below, std::size_t upper_points, const StackOptions& o,
                         const FreeSpace& seen) {
-  if (below <= 2.0 * o.seen_inset || column.half.x() <= o.seen_inset || column.half.y() <= o.seen_inset) return false;
+  const std::optional<Obb> under = column_below(column, below, o);
+  if (!under) return false;
   const double limit = std::max(static_cast<double>(o.min_seen_through), o.seen_through_share * static_cast<double>(upper_points));
-  return static_cast<double>(see_through_count(column_below(column, below, o.seen_inset), seen)) > limit;
+  return static_cast<double>(see_through_count(*under, seen)) > limit;
 }
 
 // Of the rays toward the column under the plateau that end before reaching it, true when at
@@ -104,15 +107,15 @@ bool seen_through_below(const Rect2& column, double below, std::size_t upper_poi
 // something outside the column: that space lies in the top's own shadow, not behind a box in
 // front, which would hide a box's lower faces standing on the table.
 bool in_own_shadow(const Rect2& column, double below, const StackOptions& o, const FreeSpace& seen) {
-  if (below <= 2.0 * o.seen_inset || column.half.x() <= o.seen_inset || column.half.y() <= o.seen_inset) return false;
-  const Obb under = column_below(column, below, o.seen_inset);
-  const Eigen::Vector3d sensor = in_box_axes(under, seen.sensor - under.center);
+  const std::optional<Obb> under = column_below(column, below, o);
+  if (!under) return false;
+  const Eigen::Vector3d sensor = in_box_axes(*under, seen.sensor - under->center);
   std::size_t own = 0, front = 0;
   for (const auto& p : seen.points) {
     const Eigen::Vector3d seg = p - seen.sensor;
     const double len = seg.norm();
     double enter = 0.0, leave = std::numeric_limits<double>::infinity();
-    if (len <= seen.margin || !slab_span(under, sensor, in_box_axes(under, seg), enter, leave)) continue;
+    if (len <= seen.margin || !slab_span(*under, sensor, in_box_axes(*under, seg), enter, leave)) continue;
     if (1.0 >= enter - seen.margin / len) continue;  // reaches the space (or passes it)
     if (!inside(column, {p.x(), p.y()}, o.column_margin)) ++front;
     else if (p.z() > below + 0.5 * o.level_gap) ++own;
@@ -213,13 +216,12 @@ std::vector<UprightBox> fit_stacked_boxes(const Points& points, const BoxFitOpti
         if (inside(column, {p.x(), p.y()}, o.column_margin)) whole.push_back(p);
         if (inside(column, {p.x(), p.y()}, o.sides.max_offset)) reach.push_back(p);
       }
-      const bool faces_stop = faces_stop_at(whole, parts[k], below, o);
       std::vector<UprightBox> fitted;
       if (covered(column, under) >= o.min_support ||
           (o.centre_inset >= 0.0 && inside(under, column.center, -o.centre_inset)) ||
           (o.free_space && seen != nullptr && seen_through_below(column, below, parts[k].size(), o, *seen)) ||
           steps_at(reach, below, o) ||
-          (seen != nullptr && faces_stop && in_own_shadow(column, below, o, *seen))) {  // resting on the rest: bottom at the plateau below
+          (seen != nullptr && faces_stop_at(whole, parts[k], below, o) && in_own_shadow(column, below, o, *seen))) {  // resting on the rest: bottom at the plateau below
         any_rests = true;
         Points part = parts[k];
         part.insert(part.end(), part_sides[k].begin(), part_sides[k].end());
