@@ -15,6 +15,7 @@ using ksmc::tests::perception::add_box;
 using ksmc::tests::perception::CastBox;
 using ksmc::tests::perception::upright_box;
 using ksmc::stdlib::tabletop::FreeSpace;
+using ksmc::stdlib::tabletop::RayIndex;
 
 namespace {
 // Box surface without the faces a camera above cannot see (the bottom) shifted up by `lift`.
@@ -81,17 +82,19 @@ TEST_CASE("stack split: touching neighbours of different heights both stand on t
 }
 
 namespace {
-// The free space of a rendered view, and the points of its objects (above 12 mm).
+// The rays of a rendered view, and the points of its objects (above 12 mm).
 struct View {
-  FreeSpace seen;
+  RayIndex rays;
   Points cluster;
 };
 View rendered(const std::vector<CastBox>& boxes) {
   View v;
-  v.seen.sensor = Eigen::Vector3d(0.45, -0.55, 0.6);
-  v.seen.points = ksmc::tests::perception::cast_view(v.seen.sensor, Eigen::Vector3d(0.05, 0.0, 0.05), 0.3, 0.003, boxes, 0.6, 0.4);
-  for (const auto& p : v.seen.points)
+  FreeSpace seen;
+  seen.sensor = Eigen::Vector3d(0.45, -0.55, 0.6);
+  seen.points = ksmc::tests::perception::cast_view(seen.sensor, Eigen::Vector3d(0.05, 0.0, 0.05), 0.3, 0.003, boxes, 0.6, 0.4);
+  for (const auto& p : seen.points)
     if (p.z() > 0.012) v.cluster.push_back(p);
+  v.rays = RayIndex(std::move(seen));
   return v;
 }
 }  // namespace
@@ -101,7 +104,7 @@ TEST_CASE("stack split: a box overhanging the box it rests on rests on it (the s
   // Lower box 20 x 14 x 6 cm; the upper 24 x 8 x 5 cm lies across its edge: 37.5 % of its
   // footprint is over the lower box, the rest overhangs the table.
   const View v = rendered({upright_box(0.0, 0.0, 0.0, {0.2, 0.14, 0.06}), upright_box(0.13, 0.0, 0.06, {0.24, 0.08, 0.05})});
-  const auto boxes = fit_stacked_boxes(v.cluster, {}, {}, &v.seen);
+  const auto boxes = fit_stacked_boxes(v.cluster, {}, {}, &v.rays);
   REQUIRE(boxes.size() == 2);
   CHECK(boxes[1].pose.t.z() - 0.5 * boxes[1].size.z() == Approx(0.06).margin(0.012));
   CHECK(boxes[1].size.z() == Approx(0.05).margin(0.012));
@@ -119,7 +122,7 @@ TEST_CASE("stack split: a box lying across a narrower box rests on it (its centr
   // the butter box. In sim seed 2, stacks scene 9, nothing else said it rests (the butter's
   // faces under it were in its shadow, so no side step): it came out 65 mm tall, not 34. Here
   // the side steps would find the butter's faces, so they are off, and so is the free-space
-  // test (`seen` not given): the centre alone decides.
+  // test (`rays` not given): the centre alone decides.
   const View v = rendered({upright_box(0.0, 0.0, 0.0, {0.06, 0.12, 0.03}), upright_box(0.0, 0.0, 0.03, {0.18, 0.036, 0.034})});
   StackOptions o;
   o.sides.enabled = false;
@@ -159,22 +162,23 @@ TEST_CASE("stack split: a box hiding all but a sliver of the box it lies on rest
   for (double x = -0.2; x <= 0.2; x += 0.005)
     for (double y = -0.2; y <= 0.2; y += 0.005)
       if (std::abs(x) > 0.07 || y < -0.04) seen.points.emplace_back(x, y, 0.0);  // not behind the boxes
+  const RayIndex rays(std::move(seen));
   StackOptions o;
   o.sides.enabled = false;
-  const auto boxes = fit_stacked_boxes(cluster, {}, o, &seen);
+  const auto boxes = fit_stacked_boxes(cluster, {}, o, &rays);
   REQUIRE(boxes.size() == 2);
   CHECK(boxes[1].pose.t.z() - 0.5 * boxes[1].size.z() == Approx(0.03).margin(0.006));
   CHECK(boxes[1].size.z() == Approx(0.045).margin(0.006));
   // Faces that do not stop (0 points allowed under the plateau) stand it on the table.
   o.max_points_below = 0;
-  const auto old = fit_stacked_boxes(cluster, {}, o, &seen);
+  const auto old = fit_stacked_boxes(cluster, {}, o, &rays);
   REQUIRE(old.size() == 2);
   CHECK(old[1].pose.t.z() - 0.5 * old[1].size.z() == Approx(0.0).margin(0.005));
 }
 
 TEST_CASE("stack split: a taller neighbour the sensor sees down to the table stands on it", "[perception][stack]") {
   const View v = rendered({upright_box(0.0, 0.0, 0.0, {0.1, 0.1, 0.05}), upright_box(0.0855, 0.0, 0.0, {0.07, 0.07, 0.18})});
-  const auto boxes = fit_stacked_boxes(v.cluster, {}, {}, &v.seen);
+  const auto boxes = fit_stacked_boxes(v.cluster, {}, {}, &v.rays);
   REQUIRE(boxes.size() == 2);
   for (const auto& b : boxes) CHECK(b.pose.t.z() - 0.5 * b.size.z() == Approx(0.0).margin(0.005));
   CHECK(boxes[1].size.z() == Approx(0.18).margin(0.005));
@@ -197,7 +201,7 @@ TEST_CASE("stack split: the lower box keeps its side faces under a resting box t
   // its width by 3 cm on each side: the lower box's top is seen only on its -x half, its sides
   // on the +x half only below the upper box.
   const View v = rendered({upright_box(0.0, 0.0, 0.0, {0.2, 0.1, 0.06}), upright_box(0.06, 0.0, 0.06, {0.12, 0.16, 0.05})});
-  const auto boxes = fit_stacked_boxes(v.cluster, {}, {}, &v.seen);
+  const auto boxes = fit_stacked_boxes(v.cluster, {}, {}, &v.rays);
   REQUIRE(boxes.size() == 2);
   CHECK(boxes[0].size.z() == Approx(0.06).margin(0.005));
   CHECK(std::max(boxes[0].size.x(), boxes[0].size.y()) == Approx(0.2).margin(0.01));
@@ -207,7 +211,7 @@ TEST_CASE("stack split: the lower box keeps its side faces under a resting box t
   // Without them, the lower box ends where the upper box's column begins.
   StackOptions no_sides;
   no_sides.lower_sides = false;
-  const auto cut = fit_stacked_boxes(v.cluster, {}, no_sides, &v.seen);
+  const auto cut = fit_stacked_boxes(v.cluster, {}, no_sides, &v.rays);
   REQUIRE(cut.size() == 2);
   CHECK(std::max(cut[0].size.x(), cut[0].size.y()) < 0.15);
 }

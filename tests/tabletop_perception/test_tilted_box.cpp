@@ -12,6 +12,7 @@
 
 using namespace ksmc::stdlib::tabletop::perception;
 using ksmc::stdlib::tabletop::FreeSpace;
+using ksmc::stdlib::tabletop::RayIndex;
 using ksmc::tests::perception::add_visible_box;
 using ksmc::tests::perception::lowest_corner;
 using ksmc::tests::perception::on_table;
@@ -277,9 +278,10 @@ TEST_CASE("tilted box: the rest of a cluster is split again as the cloud was, al
   FreeSpace seen;
   seen.points = pts;
   seen.sensor = Eigen::Vector3d(0.0, -0.8, 0.4);
+  const RayIndex rays(std::move(seen));
   ClusterBoxOptions o;
   o.parts.min_points = 40;
-  const auto joined = fit_cluster_boxes(pts, o, &seen);
+  const auto joined = fit_cluster_boxes(pts, o, &rays);
   CHECK(joined.size() == 2);  // the leaning box and the top
   // Without the sensor the rest is split by the tolerance alone: one box per row.
   CHECK(fit_cluster_boxes(pts, o).size() > 5);

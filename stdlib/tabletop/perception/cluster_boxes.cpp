@@ -4,7 +4,7 @@
 
 namespace ksmc::stdlib::tabletop::perception {
 
-std::vector<UprightBox> fit_cluster_boxes(const Points& points, const ClusterBoxOptions& o, const FreeSpace* seen) {
+std::vector<UprightBox> fit_cluster_boxes(const Points& points, const ClusterBoxOptions& o, const RayIndex* rays) {
   std::vector<UprightBox> out;
   std::deque<Points> todo{points};
   int tilted = 0;
@@ -21,13 +21,13 @@ std::vector<UprightBox> fit_cluster_boxes(const Points& points, const ClusterBox
         const Eigen::Vector2d everywhere(1e9, 1e9);
         // Joined along grazing tops' rows as the cloud was, where the sensor is known.
         const AboveTable rest(t->rest, everywhere, c);
-        for (Points& part : seen != nullptr ? rest.clusters(c, seen->sensor) : rest.clusters(c))
+        for (Points& part : rays != nullptr ? rest.clusters(c, rays->free_space().sensor) : rest.clusters(c))
           todo.push_back(std::move(part));
         continue;
       }
     }
     if (o.split_stacks) {
-      for (const UprightBox& b : fit_stacked_boxes(part, o.box, o.stacks, seen)) out.push_back(b);
+      for (const UprightBox& b : fit_stacked_boxes(part, o.box, o.stacks, rays)) out.push_back(b);
     } else {
       out.push_back(fit_upright_box(part, o.box));
     }

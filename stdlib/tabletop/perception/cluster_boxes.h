@@ -22,11 +22,11 @@ struct ClusterBoxOptions {
   int max_tilted = 4;     // per cluster
 };
 
-// Boxes of `points` (table frame), at least one when `points` is not empty. `seen`: the
-// whole cloud and the sensor, for the stacks' free-space test (stack_split.h) and for
-// splitting the rest after a tilted box along grazing tops' rows as the cloud was
+// Boxes of `points` (table frame), at least one when `points` is not empty. `rays`: the
+// whole cloud and the sensor, for the stacks' ray tests (stack_split.h) and for splitting the
+// rest after a tilted box along grazing tops' rows as the cloud was
 // (ClusterOptions::slant_factor); may be null (the tolerance alone).
 std::vector<UprightBox> fit_cluster_boxes(const Points& points, const ClusterBoxOptions& options = {},
-                                          const FreeSpace* seen = nullptr);
+                                          const RayIndex* rays = nullptr);
 
 }  // namespace ksmc::stdlib::tabletop::perception

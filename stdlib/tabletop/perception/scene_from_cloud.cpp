@@ -84,13 +84,14 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
   ClusterBoxOptions fit = options.fit;
   if (options.clusters.tolerance > 0.0) fit = for_sampling(fit, clusters_options.tolerance / options.clusters.tolerance);
   fit.parts = clusters_options;  // the rest after a tilted box is split as the cloud was
-  FreeSpace seen;  // the stacks' free-space test: what the sensor saw through
+  FreeSpace seen;  // what the sensor saw through: the stacks' and the passes' ray tests
   seen.points = out.cloud_in_table;
   seen.sensor = out.sensor_in_table;
+  const RayIndex rays(std::move(seen));  // each test reads only the rays toward its box
   std::vector<UprightBox> boxes;  // all clusters' boxes, then the hidden feet grown
   std::vector<std::size_t> cluster_of, per_cluster(clusters.size(), 0);
   for (std::size_t c = 0; c < clusters.size(); ++c) {
-    for (const UprightBox& box : fit_cluster_boxes(clusters[c], fit, &seen)) {
+    for (const UprightBox& box : fit_cluster_boxes(clusters[c], fit, &rays)) {
       boxes.push_back(box);
       cluster_of.push_back(c);
       ++per_cluster[c];
@@ -101,7 +102,6 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
   OwnPointsOptions owned;
   owned.layer_margin = 3.0 * out.table.noise;
   const auto points_of = [&](std::size_t i) { return own_points(boxes, cluster_of, i, clusters[cluster_of[i]], owned); };
-  const RayIndex rays(seen);  // the passes below read only the rays toward each box
   SeenUnderOptions under = options.seen_under;
   // A noisier cloud puts the points near a box's edges farther out: the footprint is inset by
   // noise_inset x the table plane's RMS when that is more.

@@ -95,31 +95,33 @@ std::optional<Obb> column_below(const Rect2& column, double below, const StackOp
 // True when the sensor saw through where the upper box's column would stand below the
 // lower plateau: rays ended behind that space, so no box stands there.
 bool seen_through_below(const Rect2& column, double below, std::size_t upper_points, const StackOptions& o,
-                        const FreeSpace& seen) {
+                        const RayIndex& rays) {
   const std::optional<Obb> under = column_below(column, below, o);
   if (!under) return false;
   const double limit = std::max(static_cast<double>(o.min_seen_through), o.seen_through_share * static_cast<double>(upper_points));
-  return static_cast<double>(see_through_count(*under, seen)) > limit;
+  return static_cast<double>(rays.see_through_count(*under)) > limit;
 }
 
 // Of the rays toward the column under the plateau that end before reaching it, true when at
 // least as many end on the column's own top part (above the plateau, within the column) as on
 // something outside the column: that space lies in the top's own shadow, not behind a box in
 // front, which would hide a box's lower faces standing on the table.
-bool in_own_shadow(const Rect2& column, double below, const StackOptions& o, const FreeSpace& seen) {
+bool in_own_shadow(const Rect2& column, double below, const StackOptions& o, const RayIndex& rays) {
   const std::optional<Obb> under = column_below(column, below, o);
   if (!under) return false;
+  const FreeSpace& seen = rays.free_space();
   const Eigen::Vector3d sensor = in_box_axes(*under, seen.sensor - under->center);
   std::size_t own = 0, front = 0;
-  for (const auto& p : seen.points) {
+  rays.for_each_toward(*under, [&](std::size_t ray) {
+    const Eigen::Vector3d& p = seen.points[ray];
     const Eigen::Vector3d seg = p - seen.sensor;
     const double len = seg.norm();
     double enter = 0.0, leave = std::numeric_limits<double>::infinity();
-    if (len <= seen.margin || !slab_span(*under, sensor, in_box_axes(*under, seg), enter, leave)) continue;
-    if (1.0 >= enter - seen.margin / len) continue;  // reaches the space (or passes it)
+    if (len <= seen.margin || !slab_span(*under, sensor, in_box_axes(*under, seg), enter, leave)) return;
+    if (1.0 >= enter - seen.margin / len) return;  // reaches the space (or passes it)
     if (!inside(column, {p.x(), p.y()}, o.column_margin)) ++front;
     else if (p.z() > below + 0.5 * o.level_gap) ++own;
-  }
+  });
   return own > 0 && own >= front;
 }
 
@@ -156,7 +158,7 @@ std::vector<Eigen::Vector2d> flat(const Points& pts) {
 }  // namespace
 
 std::vector<UprightBox> fit_stacked_boxes(const Points& points, const BoxFitOptions& box, const StackOptions& o,
-                                          const FreeSpace* seen) {
+                                          const RayIndex* rays) {
   std::vector<std::vector<UprightBox>> upper;  // found from the top down, each lowest first
   Points rest = points;
   // The lower boxes' side faces under a resting upper box. They are kept out of the plateau
@@ -219,9 +221,9 @@ std::vector<UprightBox> fit_stacked_boxes(const Points& points, const BoxFitOpti
       std::vector<UprightBox> fitted;
       if (covered(column, under) >= o.min_support ||
           (o.centre_inset >= 0.0 && inside(under, column.center, -o.centre_inset)) ||
-          (o.free_space && seen != nullptr && seen_through_below(column, below, parts[k].size(), o, *seen)) ||
+          (o.free_space && rays != nullptr && seen_through_below(column, below, parts[k].size(), o, *rays)) ||
           steps_at(reach, below, o) ||
-          (seen != nullptr && faces_stop_at(whole, parts[k], below, o) && in_own_shadow(column, below, o, *seen))) {  // resting on the rest: bottom at the plateau below
+          (rays != nullptr && faces_stop_at(whole, parts[k], below, o) && in_own_shadow(column, below, o, *rays))) {  // resting on the rest: bottom at the plateau below
         any_rests = true;
         Points part = parts[k];
         part.insert(part.end(), part_sides[k].begin(), part_sides[k].end());

@@ -35,13 +35,13 @@ struct StackOptions {
   // faces stop when the column holds fewer than `max_points_below` points under the plateau and
   // fewer than `max_below_share` of what its side faces above it (below the top's last
   // `top_band`) would put there. A box lying on a box it hides but for a sliver stood on the
-  // table (sim seed 1: a juice box 75 mm tall for 44). Needs the rays (`seen`). Off: 0.
+  // table (sim seed 1: a juice box 75 mm tall for 44). Needs the rays (`rays`). Off: 0.
   std::size_t max_points_below = 40;
   double max_below_share = 0.3;
   double top_band = 0.01;        // m
   std::size_t min_points = 40;   // a part with fewer points is dropped
   // Free-space test of "stands on the table" (off: the footprint test alone, as before it
-  // existed; it also needs the `seen` argument): the column below the lower plateau, inset by
+  // existed; it also needs the `rays` argument): the column below the lower plateau, inset by
   // `seen_inset` on every side, may be crossed by at most max(min_seen_through,
   // seen_through_share x the upper box's points) rays.
   bool free_space = true;
@@ -61,9 +61,10 @@ struct StackOptions {
   SideStepOptions sides;
 };
 
-// Boxes of one cluster (table frame), lowest first. Always at least one box. `seen`: the
-// whole cloud and the sensor (same frame), for the free-space test; null skips it.
+// Boxes of one cluster (table frame), lowest first. Always at least one box. `rays`: the
+// whole cloud and the sensor (same frame), for the free-space and own-shadow tests; null
+// skips them.
 std::vector<UprightBox> fit_stacked_boxes(const Points& points, const BoxFitOptions& box = {},
-                                          const StackOptions& options = {}, const FreeSpace* seen = nullptr);
+                                          const StackOptions& options = {}, const RayIndex* rays = nullptr);
 
 }  // namespace ksmc::stdlib::tabletop::perception
