@@ -6,30 +6,8 @@
 #include <limits>
 #include <utility>
 
-#include "stdlib/tabletop/line_of_sight.h"
 
 namespace ksmc::stdlib::tabletop::perception {
-
-SpaceUnder rays_meeting(const Obb& space, const std::vector<Obb>& own, const RayIndex& rays, double margin) {
-  const FreeSpace& seen = rays.free_space();
-  SpaceUnder out;
-  const Eigen::Vector3d o = in_box_axes(space, seen.sensor - space.center);
-  rays.for_each_toward(space, [&](std::size_t ray) {
-    const Eigen::Vector3d& p = seen.points[ray];
-    const Eigen::Vector3d seg = p - seen.sensor;
-    const double len = seg.norm();
-    if (len <= margin) return;
-    for (const Obb& b : own)
-      if ((in_box_axes(b, p - b.center).cwiseAbs() - b.half).maxCoeff() <= margin) return;
-    double enter = 0.0, leave = std::numeric_limits<double>::infinity();  // the ray, past p too
-    if (!slab_span(space, o, in_box_axes(space, seg), enter, leave)) return;
-    const double slack = margin / len;
-    if (1.0 < enter - slack) ++out.before;
-    else if (1.0 > leave + slack) ++out.through;
-    else ++out.inside;
-  });
-  return out;
-}
 
 SpaceUnder rays_under(const UprightBox& box, const RayIndex& rays, const HiddenBottomOptions& options, double floor) {
   const double bottom = bottom_height(box);

@@ -30,6 +30,7 @@
 
 #include "stdlib/tabletop/cloud_likelihood.h"
 #include "stdlib/tabletop/perception/box_fit.h"
+#include "stdlib/tabletop/perception/ray_meeting.h"
 
 namespace ksmc::stdlib::tabletop::perception {
 
@@ -45,15 +46,6 @@ struct HiddenBottomOptions {
   // grows up to its bottom.
   double close_gap = 0.01;
 };
-
-struct SpaceUnder {
-  std::size_t before = 0, inside = 0, through = 0;
-};
-
-// How the rays (RayIndex: the cloud and its sensor, each line going on past its point) meet
-// `space`, the rays to points within `margin` of one of the boxes `own` left out: ending more
-// than `margin` before it, in it, or passing through it.
-SpaceUnder rays_meeting(const Obb& space, const std::vector<Obb>& own, const RayIndex& rays, double margin);
 
 // How the rays (RayIndex: the cloud and its sensor) meet the space under `box` (an upright
 // box, table frame), from `floor` (a height) up to its bottom.

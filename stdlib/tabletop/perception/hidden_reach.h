@@ -7,7 +7,7 @@
 // inside its footprint, when the space it grows into (the lower box's cross-section over
 // the added length, at least `min_probe` long, over its height, inset by `inset`)
 // is hidden: at least `min_rays` rays end before it and they are at least `hidden_share` of
-// all the rays that meet it (hidden_bottom.h, rays_meeting; the lower box's own points left
+// all the rays that meet it (ray_meeting.h, rays_meeting; the lower box's own points left
 // out, as its front hides its back trivially: a ray ending on the box on it hides the space).
 // A space seen empty or holding a surface stays out, and so does one another box holds. An
 // upper box resting on two or more boxes (a book across two) grows none of them.

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "stdlib/tabletop/perception/hidden_bottom.h"
+#include "stdlib/tabletop/perception/ray_meeting.h"
 
 namespace ksmc::stdlib::tabletop::perception {
 

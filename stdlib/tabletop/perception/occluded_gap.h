@@ -5,7 +5,7 @@
 // share their cross-section, bottom and height (`tolerance`), are `min_gap` to `max_gap`
 // apart, and the rays toward the space between them (their cross-section, inset by `inset`)
 // are hidden: at least `min_rays` end before it, at least `hidden_share` of all the rays that
-// meet it (hidden_bottom.h, rays_meeting). Seen empty or holding a surface, the gap is real:
+// meet it (ray_meeting.h, rays_meeting). Seen empty or holding a surface, the gap is real:
 // two boxes in a row.
 #pragma once
 

@@ -2,13 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <map>
 #include <optional>
 
 #include "stdlib/tabletop/perception/footprint.h"
+#include "stdlib/tabletop/perception/ray_meeting.h"
 #include "stdlib/tabletop/perception/top_parts.h"
-#include "stdlib/tabletop/line_of_sight.h"
 
 namespace ksmc::stdlib::tabletop::perception {
 
@@ -110,15 +109,10 @@ bool in_own_shadow(const Rect2& column, double below, const StackOptions& o, con
   const std::optional<Obb> under = column_below(column, below, o);
   if (!under) return false;
   const FreeSpace& seen = rays.free_space();
-  const Eigen::Vector3d sensor = in_box_axes(*under, seen.sensor - under->center);
   std::size_t own = 0, front = 0;
-  rays.for_each_toward(*under, [&](std::size_t ray) {
+  for_each_meeting(*under, {}, rays, seen.margin, [&](std::size_t ray, RayMeets how) {
+    if (how != RayMeets::before) return;  // reaches the space (or passes it)
     const Eigen::Vector3d& p = seen.points[ray];
-    const Eigen::Vector3d seg = p - seen.sensor;
-    const double len = seg.norm();
-    double enter = 0.0, leave = std::numeric_limits<double>::infinity();
-    if (len <= seen.margin || !slab_span(*under, sensor, in_box_axes(*under, seg), enter, leave)) return;
-    if (1.0 >= enter - seen.margin / len) return;  // reaches the space (or passes it)
     if (!inside(column, {p.x(), p.y()}, o.column_margin)) ++front;
     else if (p.z() > below + 0.5 * o.level_gap) ++own;
   });

@@ -6,7 +6,7 @@
 
 #include "stdlib/tabletop/obb.h"
 #include "stdlib/tabletop/obb_sat.h"
-#include "stdlib/tabletop/perception/hidden_bottom.h"
+#include "stdlib/tabletop/perception/ray_meeting.h"
 
 namespace ksmc::stdlib::tabletop::perception {
 
