@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "stdlib/tabletop/camera_geometry.h"
 #include "tools/perception/visibility.h"
 
 namespace ts = ksmc::tools::tabletop_sim;
@@ -13,16 +14,9 @@ namespace {
 
 // A camera at `eye` (table frame) looking at `target`, OpenCV axes (x right, y down, z forward).
 ts::Pose looking_at(const Eigen::Vector3d& eye, const Eigen::Vector3d& target) {
-  const Eigen::Vector3d z = (target - eye).normalized();
-  const Eigen::Vector3d x = z.cross(Eigen::Vector3d::UnitZ()).normalized();
-  const Eigen::Vector3d y = z.cross(x);
-  Eigen::Matrix3d r;
-  r.col(0) = x;
-  r.col(1) = y;
-  r.col(2) = z;
   ts::Pose p;
   p.t = eye;
-  p.q = Eigen::Quaterniond(r);
+  p.q = ksmc::stdlib::tabletop::look_along(target - eye);
   return p;
 }
 
