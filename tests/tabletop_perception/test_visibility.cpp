@@ -77,6 +77,18 @@ TEST_CASE("visibility: a long box whose far end is behind a tall box does not sh
   CHECK(v[1].extents_shown);
 }
 
+TEST_CASE("visibility: a box seen as two ends either side of an occluder is not shown whole", "[perception][sim]") {
+  // A low 30 cm box across the view, and a thin post in front of its middle.
+  const ts::Box low = upright(0.0, 0.0, 0.0, {0.3, 0.06, 0.04}, kYaw + 0.5 * 3.14159265358979323846);
+  const std::vector<ts::Box> alone{low};
+  CHECK(box_views(kCamera, kView, alone, 2)[0].extents_shown);
+  const Eigen::Vector3d front = -0.1 * kAlong;
+  const std::vector<ts::Box> both{low, upright(front.x(), front.y(), 0.0, {0.04, 0.04, 0.3}, kYaw)};
+  const auto v = box_views(kCamera, kView, both, 2);
+  CHECK(v[0].visible > 0.5);  // most of it is in view ...
+  CHECK_FALSE(v[0].extents_shown);  // ... in two pieces, neither as long as the box
+}
+
 TEST_CASE("visibility: a box outside the image is neither visible nor shown", "[perception][sim]") {
   const std::vector<ts::Box> boxes{upright(3.0, 3.0, 0.0, {0.1, 0.1, 0.1})};
   const auto v = box_views(kCamera, kView, boxes, 2);

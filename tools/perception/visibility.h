@@ -4,9 +4,11 @@
 //     extended by one image width and height past each border (so a box the image border cuts
 //     is partly unseen). Boxes are on the table, so the table hides none of them. 1 for a box
 //     in full view, 0 for a box entirely behind others or out of the image.
-//   * Extents shown: whether the surface points where the box is the nearest hit (inside the
-//     image) span each of its three extents, along its own axes, to within `tolerance` (by
-//     default the 1 cm; the pixel grid alone leaves a few mm at each end). A box
+//   * Extents shown: whether one connected piece of the box's seen surface (the pixels inside
+//     the image where it is the nearest hit, 4-neighbours on the grid) spans each of its three
+//     extents, along its own axes, to within `tolerance` (by default the 1 cm; the
+//     pixel grid alone leaves a few mm at each end). Two ends seen either side of an occluder
+//     are two pieces: nothing in the cloud ties them to one box by itself. A box
 //     standing on the table (an axis within 2 degrees of vertical, its bottom within
 //     `tolerance` of the table) has its height shown when its top is seen: the table gives
 //     its bottom. A box whose extents are not all shown cannot be recovered to that tolerance
