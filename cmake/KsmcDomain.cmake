@@ -22,6 +22,7 @@ if(KSMC_PACKAGE_MODE)
   file(GLOB KSMC_STDLIB_KSM ${KSMC_STDLIB_ROOT}/stdlib/*.ksm)
   set(_ksmc_tool ${KSMC_EXECUTABLE})
   set(_ksmc_tool_dep ${KSMC_EXECUTABLE})
+  set(_ksmc_include_args)  # the installed ksmc searches its own share/ksmc
 else()
   set(KSMC_STDLIB_KSM
     ${PROJECT_SOURCE_DIR}/stdlib/core.ksm
@@ -32,6 +33,9 @@ else()
   endif()
   set(_ksmc_tool ksmc)
   set(_ksmc_tool_dep ksmc)
+  # `include "stdlib/..."` is found by searching up from the including file; a domain file
+  # written into a build folder outside the source tree (a test's edited copy) finds it here.
+  set(_ksmc_include_args -I ${PROJECT_SOURCE_DIR})
 endif()
 
 # The folder ksmc runs in and the absolute path of FILE (sets <prefix>_workdir, _abs).
@@ -50,7 +54,7 @@ function(ksmc_emit_factors)
   set(outputs ${E_OUTPUT_DIR}/${E_DOMAIN}_factors.h ${E_OUTPUT_DIR}/${E_DOMAIN}_factors.cpp)
   add_custom_command(
     OUTPUT ${outputs}
-    COMMAND ${_ksmc_tool} emit ${E_FILE} --out ${E_OUTPUT_DIR}
+    COMMAND ${_ksmc_tool} emit ${_ksmc_include_args} ${E_FILE} --out ${E_OUTPUT_DIR}
     WORKING_DIRECTORY ${loc_workdir}
     DEPENDS ${_ksmc_tool_dep} ${loc_abs} ${KSMC_STDLIB_KSM}
     COMMENT "ksmc emit ${E_FILE}"
@@ -97,7 +101,7 @@ function(ksmc_add_domain NAME FILE)
     ${dir}/${stem}_model.h ${dir}/${stem}_model.cpp ${dir}/${stem}_main.cpp)
   add_custom_command(
     OUTPUT ${outputs}
-    COMMAND ${_ksmc_tool} emit ${FILE} --out ${dir}
+    COMMAND ${_ksmc_tool} emit ${_ksmc_include_args} ${FILE} --out ${dir}
     WORKING_DIRECTORY ${loc_workdir}
     DEPENDS ${_ksmc_tool_dep} ${loc_abs} ${KSMC_STDLIB_KSM}
     COMMENT "ksmc emit ${FILE}"
