@@ -364,6 +364,32 @@ TEST_CASE("seen under: the height the sensor saw up to", "[perception][seen_unde
   CHECK(cut_seen_under(one, seen.points, rays, BoxFitOptions{}, SideStepOptions{}, off).empty());
 }
 
+TEST_CASE("seen under: a box fitted wider than its top is read under its top", "[perception][seen_under]") {
+  // The book on a narrower box of kBookOnBox, fitted as one box 12 mm wider than the book at
+  // the front (as when the lower box, turned under the book, pokes out there). The rays to the
+  // book's front face cross that strip up to the book's top, and the whole box shows no cut;
+  // under the book's top face alone the rays see through up to just under the book.
+  FreeSpace seen;
+  seen.sensor = kAside;
+  seen.points = tp::table_view(kAside, kBookOnBox);
+  const RayIndex rays(seen);
+  Points cluster;
+  for (const auto& p : seen.points)
+    if (p.z() > 0.012) cluster.push_back(p);
+  UprightBox wide;
+  wide.size = Eigen::Vector3d(0.19, 0.25 + 0.012, 0.10);
+  wide.pose.t = Eigen::Vector3d(0.0, 0.05 - 0.006, 0.05);
+  SeenUnderOptions whole;
+  whole.top_band = 0.0;
+  CHECK(seen_under_height(wide, rays, whole) > 0.09);
+  CHECK(cut_seen_under(wide, cluster, rays, BoxFitOptions{}, SideStepOptions{}, whole).empty());
+  const std::vector<UprightBox> parts = cut_seen_under(wide, cluster, rays, BoxFitOptions{}, SideStepOptions{});
+  REQUIRE(parts.size() == 2);
+  CHECK(bottom_height(parts[1]) == Approx(0.06).margin(0.01));  // the book, resting where the rays stop
+  CHECK(bottom_height(parts[1]) + parts[1].size.z() == Approx(0.10).margin(0.004));
+  CHECK(parts[0].size.z() == Approx(0.06).margin(0.01));  // the box under it
+}
+
 namespace {
 
 // The scene's boxes (table frame) with the occluded-gap step on or off.

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <utility>
 
 #include "stdlib/tabletop/line_of_sight.h"
+#include "stdlib/tabletop/perception/footprint.h"
 
 namespace ksmc::stdlib::tabletop::perception {
 
@@ -24,6 +26,23 @@ bool set_back(const UprightBox& box, const Points& lower, const SeenUnderOptions
     if (lo > -half + options.margin || hi < half - options.margin) return true;
   }
   return false;
+}
+
+// The column under `box`'s top face (SeenUnderOptions::top_band): the minimal rectangle of the
+// points within top_band of its top, over the box's height; the box itself when the top has
+// fewer than min_top_points.
+UprightBox under_top(const UprightBox& box, const Points& points, const SeenUnderOptions& options) {
+  const double top = bottom_height(box) + box.size.z();
+  std::vector<Eigen::Vector2d> face;
+  for (const auto& p : points)
+    if (p.z() >= top - options.top_band) face.emplace_back(p.x(), p.y());
+  if (face.size() < options.min_top_points) return box;
+  const Rect2 r = min_area_rect(face, options.top_trim);
+  UprightBox column = box;
+  column.pose.t.head<2>() = r.center;
+  column.pose.q = Eigen::Quaterniond(Eigen::AngleAxisd(std::atan2(r.u.y(), r.u.x()), Eigen::Vector3d::UnitZ()));
+  column.size.head<2>() = 2.0 * r.half;
+  return column;
 }
 
 }  // namespace
@@ -65,7 +84,18 @@ std::vector<UprightBox> cut_seen_under(const UprightBox& box, const Points& poin
   if (!is_upright(box)) return {};
   const double bottom = bottom_height(box), top = bottom + box.size.z();
   const double base = bottom > fit.float_gap ? bottom : 0.0;  // a floating box's lower part floats too
-  const double cut = seen_under_height(box, rays, options);
+  double cut = seen_under_height(box, rays, options);
+  if (top - cut < options.min_upper && options.top_band > 0.0) {  // the strips of a merged box: its top alone
+    const UprightBox column = under_top(box, points, options);
+    const auto sides_of = [](const UprightBox& b) {  // short side, long side
+      return std::pair{std::min(b.size.x(), b.size.y()), std::max(b.size.x(), b.size.y())};
+    };
+    const auto [box_short, box_long] = sides_of(box);
+    const auto [top_short, top_long] = sides_of(column);
+    const bool narrower = std::max(box_short - top_short, box_long - top_long) > options.top_excess;
+    if (narrower && top_short * top_long >= options.top_cover * box_short * box_long)
+      cut = seen_under_height(column, rays, options);
+  }
   if (cut <= base + options.min_cut || top - cut < options.min_upper) return {};
   Points upper, lower;
   for (const auto& p : points) (p.z() > cut ? upper : lower).push_back(p);
