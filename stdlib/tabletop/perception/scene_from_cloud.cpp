@@ -62,8 +62,12 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
   }
   out.cluster_tolerance = clusters_options.tolerance;
   stage(fmt::format("clustering the points above the table ({:.1f} mm tolerance)", 1000.0 * clusters_options.tolerance));
+  FreeSpace seen;  // what the sensor saw through: the shadow merge's, the stacks' and the passes' ray tests
+  seen.points = out.cloud_in_table;
+  seen.sensor = out.sensor_in_table;
+  const RayIndex rays(std::move(seen));  // each test reads only the rays toward its box
   out.object_points = merge_shadow_split(above.clusters(clusters_options, out.sensor_in_table), out.sensor_in_table,
-                                         options.shadow);
+                                         options.shadow, &rays);
   if (out.object_points.empty())
     throw CloudError(fmt::format("{}: no object above the table ({} table points, none of the other {} points "
                                  "forms a cluster of {} points between {} and {} m above it)",
@@ -84,10 +88,6 @@ CloudScene scene_from_points(const Points& cloud, const std::string& source, con
   ClusterBoxOptions fit = options.fit;
   if (options.clusters.tolerance > 0.0) fit = for_sampling(fit, clusters_options.tolerance / options.clusters.tolerance);
   fit.parts = clusters_options;  // the rest after a tilted box is split as the cloud was
-  FreeSpace seen;  // what the sensor saw through: the stacks' and the passes' ray tests
-  seen.points = out.cloud_in_table;
-  seen.sensor = out.sensor_in_table;
-  const RayIndex rays(std::move(seen));  // each test reads only the rays toward its box
   std::vector<UprightBox> boxes;  // all clusters' boxes, then the hidden feet grown
   std::vector<std::size_t> cluster_of, per_cluster(clusters.size(), 0);
   for (std::size_t c = 0; c < clusters.size(); ++c) {

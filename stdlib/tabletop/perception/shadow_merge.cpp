@@ -7,6 +7,8 @@
 #include <unordered_map>
 #include <utility>
 
+#include "stdlib/tabletop/perception/footprint.h"
+
 namespace ksmc::stdlib::tabletop::perception {
 
 namespace {
@@ -126,16 +128,57 @@ bool shadow_split(const Points& near, const CellMap<double>& near_tops, const Po
   // The occluder rests on the near top: some of its points are within `reach` (2D) of the
   // top's points.
   for (const auto& p : near)
-    if (p.z() > plane + o.occluder_above) {
-      if (near_plane.near(p.x(), p.y())) return true;
-    }
+    if (p.z() > plane + o.occluder_above && near_plane.near(p.x(), p.y())) return true;
   return false;
+}
+
+// True when the sensor saw under the plane between the tops: inside the convex hull of both
+// tops' points (inset by `slab_inset`), rays crossed the height `slab_top` under the plane and
+// ended below the lower half of that height (the table between two boxes, not a box leaning on
+// one). One top split by a shadow has no such ray: there, the rays end on the top or on the
+// box lying on it.
+bool seen_between(const Points& near, const CellMap<double>& near_tops, const Points& far, const CellMap<double>& far_tops,
+                  double plane, const RayIndex& rays, const ShadowMergeOptions& o) {
+  std::vector<Eigen::Vector2d> tops;
+  for (const auto& p : near)
+    if (on_top(p, plane, o.plane_band, near_tops)) tops.emplace_back(p.x(), p.y());
+  for (const auto& p : far)
+    if (on_top(p, plane, o.plane_band, far_tops)) tops.emplace_back(p.x(), p.y());
+  const std::vector<Eigen::Vector2d> hull = convex_hull(tops);
+  const double cross_at = plane - o.slab_top, end_below = std::min(cross_at - o.slab_depth, 0.5 * cross_at);
+  if (hull.size() < 3 || end_below <= 0.0) return false;
+  const auto inside_hull = [&hull, &o](const Eigen::Vector2d& q) {
+    for (std::size_t k = 0; k < hull.size(); ++k) {
+      const Eigen::Vector2d e = hull[(k + 1) % hull.size()] - hull[k], d = q - hull[k];
+      if (e.x() * d.y() - e.y() * d.x() < o.slab_inset * e.norm()) return false;  // left of each CCW edge, by the inset
+    }
+    return true;
+  };
+  const Rect2 r = min_area_rect(tops);  // around the hull: which rays to read
+  Obb slab;
+  slab.center = Eigen::Vector3d(r.center.x(), r.center.y(), 0.5 * (cross_at + end_below));
+  slab.axes.col(0) = Eigen::Vector3d(r.u.x(), r.u.y(), 0.0);
+  slab.axes.col(1) = Eigen::Vector3d(r.v().x(), r.v().y(), 0.0);
+  slab.axes.col(2) = Eigen::Vector3d::UnitZ();
+  slab.half = Eigen::Vector3d(r.half.x(), r.half.y(), 0.5 * (cross_at - end_below));
+  const FreeSpace& seen = rays.free_space();
+  const Eigen::Vector3d& s = seen.sensor;
+  if (s.z() <= cross_at) return false;
+  std::size_t through = 0;
+  rays.for_each_toward(slab, [&](std::size_t ray) {
+    const Eigen::Vector3d& p = seen.points[ray];
+    if (p.z() >= end_below) return;
+    const Eigen::Vector3d q = s + (s.z() - cross_at) / (s.z() - p.z()) * (p - s);
+    through += inside_hull(q.head<2>());
+  });
+  const double limit = std::max(static_cast<double>(o.max_seen_through), o.seen_through_share * static_cast<double>(tops.size()));
+  return static_cast<double>(through) > limit;
 }
 
 }  // namespace
 
 std::vector<Points> merge_shadow_split(std::vector<Points> clusters, const Eigen::Vector3d& sensor,
-                                       const ShadowMergeOptions& o) {
+                                       const ShadowMergeOptions& o, const RayIndex* rays) {
   if (!o.enabled || clusters.size() < 2) return clusters;
   const std::size_t n = clusters.size();
   std::vector<Bounds> bounds;
@@ -163,7 +206,9 @@ std::vector<Points> merge_shadow_split(std::vector<Points> clusters, const Eigen
       const Bounds& b = bounds[f];
       const Eigen::Vector2d gap = (a.lo - b.hi).cwiseMax(b.lo - a.hi).cwiseMax(0.0);
       if (gap.norm() > o.neighbourhood || a.top <= plane + o.occluder_above) continue;
-      if (shadow_split(clusters[c], tops[c], clusters[f], tops[f], plane, sensor, o)) root[find(f)] = find(c);
+      if (!shadow_split(clusters[c], tops[c], clusters[f], tops[f], plane, sensor, o)) continue;
+      if (rays != nullptr && seen_between(clusters[c], tops[c], clusters[f], tops[f], plane, *rays, o)) continue;
+      root[find(f)] = find(c);
     }
   }
   // Each group in the place of its first cluster; the rest appended to it in order.
