@@ -1,7 +1,7 @@
 // One cluster, several boxes: a box resting on a box (also one overhanging it: the free-space
 // test), a box lying across a narrower one (its centre over it) or hiding all but a sliver of
 // it (its faces stop at the plateau), a lower box whose width a resting box covers, two touching neighbours of different
-// heights, and a tilted box that must stay one box.
+// heights (also only 11 mm apart), and a tilted box that must stay one box.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -79,6 +79,28 @@ TEST_CASE("stack split: touching neighbours of different heights both stand on t
   for (const auto& b : boxes) CHECK(b.pose.t.z() - 0.5 * b.size.z() == Approx(0.0).margin(0.003));
   CHECK(boxes[1].size.z() == Approx(0.18).margin(0.004));
   CHECK(boxes[0].size.z() == Approx(0.05).margin(0.004));
+}
+
+TEST_CASE("stack split: touching neighbours 11 mm apart in height are two boxes (a valley between the tops)",
+          "[perception][stack]") {
+  // A toothpaste (37 mm) beside a medicine box lying on its side (26 mm): closer than level_gap,
+  // and each top's plateau lay in the other's flank.
+  Points pts;
+  add_box(pts, 0.0, 0.0, 0.0, Eigen::Vector3d(0.18, 0.04, 0.037), 0.004);
+  add_box(pts, -0.135, 0.01, 0.2, Eigen::Vector3d(0.09, 0.07, 0.026), 0.004);
+  const auto boxes = fit_stacked_boxes(pts);
+  REQUIRE(boxes.size() == 2);
+  std::vector<double> heights;
+  for (const auto& b : boxes) {
+    CHECK(b.pose.t.z() - 0.5 * b.size.z() == Approx(0.0).margin(0.003));
+    heights.push_back(b.size.z());
+  }
+  std::sort(heights.begin(), heights.end());
+  CHECK(heights[0] == Approx(0.026).margin(0.004));
+  CHECK(heights[1] == Approx(0.037).margin(0.004));
+  StackOptions one_level;
+  one_level.valley_share = -1.0;
+  CHECK(fit_stacked_boxes(pts, {}, one_level).size() == 1);
 }
 
 namespace {

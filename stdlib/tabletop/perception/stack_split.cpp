@@ -15,7 +15,9 @@ namespace {
 
 // Heights of the plateaus (top surfaces), highest first: histogram of cell maxima in
 // level_gap / 4 bins, a level is a peak: three neighbouring bins holding min_level_area
-// and peak_contrast times the four bins around them. The first window from the top that
+// and peak_contrast times the four bins around them (or, next to another top's plateau, twice
+// the two on one side with a valley toward the other: StackOptions::valley_share); a level
+// closer than level_gap to the one above only with a valley between. The first window from the top that
 // qualifies can be centred a bin above the top itself (noise spills the top's maxima into the
 // bin above), so a level's height is then measured, not binned: the median height of the
 // points near it (within two bins) in cells whose maximum is near it too, i.e. the top face's
@@ -41,11 +43,24 @@ std::vector<double> plateaus(const Points& points, const StackOptions& o) {
     };
     const long k = it->first;
     const int count = at(k - 1) + at(k) + at(k + 1);
-    const int flank = at(k - 3) + at(k - 2) + at(k + 2) + at(k + 3);
+    const int below = at(k - 3) + at(k - 2), above = at(k + 2) + at(k + 3);
     const double h = (static_cast<double>(k) + 0.5) * bin;
+    const bool valleys = o.valley_share >= 0.0;
+    const auto empty_ish = [&](long j, int of) { return at(j) <= o.valley_share * of; };
     // A flat top is a peak; a tilted face spreads evenly over the bins (count/flank = 3/4).
-    if (count < need || count < o.peak_contrast * flank) continue;
-    if (!levels.empty() && binned.back() - h < o.level_gap) continue;
+    // Next to another top, one side is clean and a valley lies toward the other.
+    const bool peak =
+        count >= o.peak_contrast * (below + above) ||
+        (valleys && count >= 2.0 * o.peak_contrast * above && (empty_ish(k - 1, at(k)) || empty_ish(k - 2, at(k)))) ||
+        (valleys && count >= 2.0 * o.peak_contrast * below && (empty_ish(k + 1, at(k)) || empty_ish(k + 2, at(k))));
+    if (count < need || !peak) continue;
+    if (!levels.empty() && binned.back() - h < o.level_gap) {
+      const long upper = std::lround(std::floor(binned.back() / bin));
+      if (!valleys || upper - k < o.min_valley_bins) continue;
+      bool valley = true;
+      for (long j = k + 1; j < upper; ++j) valley = valley && empty_ish(j, std::min(at(k), at(upper)));
+      if (!valley) continue;
+    }
     binned.push_back(h);
     const double lo = (static_cast<double>(k) - 2.0) * bin, hi = (static_cast<double>(k) + 2.0) * bin;
     std::vector<double> near;

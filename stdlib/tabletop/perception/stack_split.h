@@ -19,9 +19,19 @@ namespace ksmc::stdlib::tabletop::perception {
 
 struct StackOptions {
   double cell = 0.005;           // m, footprint grid
-  double level_gap = 0.02;       // m, plateaus closer in height are one level
+  double level_gap = 0.02;       // m, plateaus closer in height are one level ...
   double min_level_area = 0.0006; // m^2 of cells at a plateau's height (6 cm^2)
   double peak_contrast = 2.0;    // plateau cells / cells of the bins beside it (tilted faces: 0.75)
+  // ... unless a valley lies between them (stop 46): two tops side by side or stacked 10-20 mm
+  // apart (a toothpaste beside a medicine box lying on its side, 37 and 26 mm). A plateau next to
+  // another one is a peak when one side's bins are clean (peak_contrast x twice that side) and
+  // on the other side a bin within two of its centre holds at most `valley_share` of its centre
+  // bin (a tilted face fills those bins evenly); a level closer than level_gap to the one above
+  // is kept when its centre lies at least `min_valley_bins` bins (of level_gap / 4) below that
+  // one's and every bin between holds at most `valley_share` of the smaller centre bin.
+  // Off: valley_share < 0.
+  double valley_share = 0.1;
+  int min_valley_bins = 2;
   double column_margin = 0.006;  // m, the upper box's column is its rectangle grown by this
   double min_support = 0.5;      // share of the upper footprint over the rest that means "stacked"
   // A top whose centre lies over the rest's rectangle, at least `centre_inset` inside it, rests
