@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include "stdlib/tabletop/perception/shadow_merge.h"
+#include "synthetic_cloud.h"
 
 using namespace ksmc::stdlib::tabletop::perception;
 using ksmc::stdlib::tabletop::FreeSpace;
@@ -70,66 +71,37 @@ TEST_CASE("shadow merge: what is not a shadow split stays apart", "[perception][
 
 namespace {
 
-struct Block {  // an axis-aligned box
-  Eigen::Vector3d lo, hi;
-};
-
-// Whether the segment from p to the sensor passes through a block (slab test, its own
-// surface left out).
-bool hidden(const Eigen::Vector3d& p, const Eigen::Vector3d& sensor, const std::vector<Block>& blocks) {
-  const Eigen::Vector3d d = sensor - p;
-  for (const Block& b : blocks) {
-    double t0 = 1e-6, t1 = 1.0;
-    for (int k = 0; k < 3 && t0 <= t1; ++k) {
-      if (std::abs(d[k]) < 1e-12) {
-        if (p[k] <= b.lo[k] || p[k] >= b.hi[k]) t1 = -1.0;
-        continue;
-      }
-      const double a = (b.lo[k] - p[k]) / d[k], c = (b.hi[k] - p[k]) / d[k];
-      t0 = std::max(t0, std::min(a, c));
-      t1 = std::min(t1, std::max(a, c));
-    }
-    if (t0 < t1 - 1e-9) return true;
-  }
-  return false;
-}
-
-// The points of a block's top and side faces (3 mm grid) that the sensor sees.
-Points seen_faces(const Block& b, const Eigen::Vector3d& sensor, const std::vector<Block>& all) {
-  Points candidates;
-  add_top(candidates, b.lo.x(), b.hi.x(), b.lo.y(), b.hi.y(), b.hi.z());
-  for (double z = b.lo.z() + 0.0015; z < b.hi.z(); z += 0.003) {
-    for (double x = b.lo.x(); x <= b.hi.x() + 1e-9; x += 0.003) {
-      candidates.emplace_back(x, b.lo.y(), z);
-      candidates.emplace_back(x, b.hi.y(), z);
-    }
-    for (double y = b.lo.y(); y <= b.hi.y() + 1e-9; y += 0.003) {
-      candidates.emplace_back(b.lo.x(), y, z);
-      candidates.emplace_back(b.hi.x(), y, z);
-    }
-  }
-  Points seen;
-  for (const auto& p : candidates)
-    if (!hidden(p, sensor, all)) seen.push_back(p);
-  return seen;
-}
-
-// The whole cloud: the blocks' seen faces and the table's seen points.
-RayIndex seen_cloud(const std::vector<Block>& blocks, const Eigen::Vector3d& sensor) {
-  FreeSpace fs;
-  fs.sensor = sensor;
-  for (const Block& b : blocks) {
-    const Points f = seen_faces(b, sensor, blocks);
-    fs.points.insert(fs.points.end(), f.begin(), f.end());
-  }
-  for (double x = -0.4; x <= 0.5; x += 0.003)
-    for (double y = -0.4; y <= 0.5; y += 0.003)
-      if (!hidden({x, y, 0.0}, sensor, blocks)) fs.points.emplace_back(x, y, 0.0);
-  return RayIndex(std::move(fs));
-}
+using ksmc::tests::perception::CastBox;
+using ksmc::tests::perception::upright_box;
 
 const Eigen::Vector3d kHigh(0.0, -0.3, 1.0);
-const Block kAcross{{-0.1, -0.01, 0.06}, {0.1, 0.03, 0.1}};  // a box lying across the lower top
+
+// A view of `boxes` from kHigh (ray cast, 3 mm at 1 m): the rays, and per box the points on
+// it (within 1 mm; the table's points are on none).
+struct View {
+  RayIndex rays;
+  std::vector<Points> on;
+};
+View seen(const std::vector<CastBox>& boxes) {
+  FreeSpace fs;
+  fs.sensor = kHigh;
+  fs.points = ksmc::tests::perception::cast_view(kHigh, Eigen::Vector3d(0.05, 0.05, 0.03), 0.45, 0.003, boxes, 0.5, 0.5);
+  View v;
+  v.on.resize(boxes.size());
+  for (const auto& p : fs.points)
+    for (std::size_t b = 0; b < boxes.size(); ++b) {
+      const Eigen::Vector3d l = boxes[b].pose.inverse() * p;
+      if ((l.cwiseAbs() - 0.5 * boxes[b].size).maxCoeff() <= 0.001) {
+        v.on[b].push_back(p);
+        break;
+      }
+    }
+  v.rays = RayIndex(std::move(fs));
+  return v;
+}
+
+// A box lying across the lower top: 20 x 4 x 4 cm, y from -1 to 3 cm, on a 6 cm top.
+const CastBox kAcross = upright_box(0.0, 0.01, 0.06, Eigen::Vector3d(0.2, 0.04, 0.04));
 
 }  // namespace
 
@@ -137,22 +109,19 @@ TEST_CASE("shadow merge: a neighbour of the same height with the table seen betw
           "[perception][shadow]") {
   // Box a (6 cm) ends just past the box lying across it; box b (6 cm) starts beyond that box's
   // shadow and reaches 20 cm further along x, so the table is seen inside the hull of the two tops.
-  const Block a{{-0.1, -0.1, 0.0}, {0.1, 0.035, 0.06}}, b{{-0.1, 0.05, 0.0}, {0.3, 0.2, 0.06}};
-  const std::vector<Block> blocks{a, kAcross, b};
-  Points near = seen_faces(a, kHigh, blocks);
-  const Points across = seen_faces(kAcross, kHigh, blocks);
-  near.insert(near.end(), across.begin(), across.end());
-  const Points far = seen_faces(b, kHigh, blocks);
+  const CastBox a = upright_box(0.0, -0.0325, 0.0, Eigen::Vector3d(0.2, 0.135, 0.06));
+  const CastBox b = upright_box(0.1, 0.125, 0.0, Eigen::Vector3d(0.4, 0.15, 0.06));
+  const View v = seen({a, kAcross, b});
+  Points near = v.on[0];
+  near.insert(near.end(), v.on[1].begin(), v.on[1].end());
+  const Points& far = v.on[2];
   // The shadow test alone takes b for the far part of a's top.
   REQUIRE(merge_shadow_split({near, far}, kHigh).size() == 1);
-  const RayIndex rays = seen_cloud(blocks, kHigh);
-  CHECK(merge_shadow_split({near, far}, kHigh, {}, &rays).size() == 2);
+  CHECK(merge_shadow_split({near, far}, kHigh, {}, &v.rays).size() == 2);
   // One long box under the one lying across it: the rays end on its top, so it is joined.
-  const Block whole{{-0.1, -0.1, 0.0}, {0.1, 0.2, 0.06}};
-  const std::vector<Block> one{whole, kAcross};
+  const View one = seen({upright_box(0.0, 0.05, 0.0, Eigen::Vector3d(0.2, 0.3, 0.06)), kAcross});
   Points top_near, top_far;
-  for (const auto& p : seen_faces(whole, kHigh, one)) (p.y() < 0.0 ? top_near : top_far).push_back(p);
-  top_near.insert(top_near.end(), across.begin(), across.end());
-  const RayIndex one_rays = seen_cloud(one, kHigh);
-  CHECK(merge_shadow_split({top_near, top_far}, kHigh, {}, &one_rays).size() == 1);
+  for (const auto& p : one.on[0]) (p.y() < 0.0 ? top_near : top_far).push_back(p);
+  top_near.insert(top_near.end(), one.on[1].begin(), one.on[1].end());
+  CHECK(merge_shadow_split({top_near, top_far}, kHigh, {}, &one.rays).size() == 1);
 }

@@ -123,6 +123,16 @@ Rect2 min_area_rect(const std::vector<Eigen::Vector2d>& points, double trim) {
   return best_rect(points, trim, [](const Rect2& r) { return r.area(); });
 }
 
+Obb upright_over(const Rect2& r, double bottom, double top, double inset) {
+  Obb b;
+  b.center = Eigen::Vector3d(r.center.x(), r.center.y(), 0.5 * (bottom + top));
+  b.axes.col(0) = Eigen::Vector3d(r.u.x(), r.u.y(), 0.0);
+  b.axes.col(1) = Eigen::Vector3d(r.v().x(), r.v().y(), 0.0);
+  b.axes.col(2) = Eigen::Vector3d::UnitZ();
+  b.half = Eigen::Vector3d(r.half.x() - inset, r.half.y() - inset, 0.5 * (top - bottom) - inset);
+  return b;
+}
+
 Rect2 faces_rect(const std::vector<Eigen::Vector2d>& points, double trim) {
   return best_rect(points, trim, [&points](const Rect2& r) {
     double sum = 0.0;

@@ -8,6 +8,8 @@
 
 #include <Eigen/Core>
 
+#include "stdlib/tabletop/obb.h"
+
 namespace ksmc::stdlib::tabletop::perception {
 
 struct Rect2 {
@@ -18,6 +20,11 @@ struct Rect2 {
   [[nodiscard]] Eigen::Vector2d v() const { return {-u.y(), u.x()}; }
   [[nodiscard]] double area() const { return 4.0 * half.x() * half.y(); }
 };
+
+// The upright box (axis 2 along z) over rectangle `r` from height `bottom` to `top`, each side
+// inset by `inset` (the rays' tests read the space over a footprint). Its half extents may be
+// zero or negative when the inset leaves nothing: the caller checks.
+Obb upright_over(const Rect2& r, double bottom, double top, double inset = 0.0);
 
 // Whether rectangles a and b overlap, each grown by `slack` (separating axes: the four side
 // directions).

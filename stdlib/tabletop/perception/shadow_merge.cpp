@@ -154,13 +154,7 @@ bool seen_between(const Points& near, const CellMap<double>& near_tops, const Po
     }
     return true;
   };
-  const Rect2 r = min_area_rect(tops);  // around the hull: which rays to read
-  Obb slab;
-  slab.center = Eigen::Vector3d(r.center.x(), r.center.y(), 0.5 * (cross_at + end_below));
-  slab.axes.col(0) = Eigen::Vector3d(r.u.x(), r.u.y(), 0.0);
-  slab.axes.col(1) = Eigen::Vector3d(r.v().x(), r.v().y(), 0.0);
-  slab.axes.col(2) = Eigen::Vector3d::UnitZ();
-  slab.half = Eigen::Vector3d(r.half.x(), r.half.y(), 0.5 * (cross_at - end_below));
+  const Obb slab = upright_over(min_area_rect(tops), end_below, cross_at);  // around the hull: which rays to read
   const FreeSpace& seen = rays.free_space();
   const Eigen::Vector3d& s = seen.sensor;
   if (s.z() <= cross_at) return false;

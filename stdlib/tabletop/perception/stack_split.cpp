@@ -97,13 +97,7 @@ double covered(const Rect2& a, const Rect2& b) {
 // inset leaves nothing.
 std::optional<Obb> column_below(const Rect2& column, double below, const StackOptions& o) {
   if (below <= 2.0 * o.seen_inset || column.half.x() <= o.seen_inset || column.half.y() <= o.seen_inset) return std::nullopt;
-  Obb under;
-  under.center = Eigen::Vector3d(column.center.x(), column.center.y(), 0.5 * below);
-  under.axes.col(0) = Eigen::Vector3d(column.u.x(), column.u.y(), 0.0);
-  under.axes.col(1) = Eigen::Vector3d(column.v().x(), column.v().y(), 0.0);
-  under.axes.col(2) = Eigen::Vector3d::UnitZ();
-  under.half = Eigen::Vector3d(column.half.x() - o.seen_inset, column.half.y() - o.seen_inset, 0.5 * below - o.seen_inset);
-  return under;
+  return upright_over(column, 0.0, below, o.seen_inset);
 }
 
 // True when the sensor saw through where the upper box's column would stand below the
