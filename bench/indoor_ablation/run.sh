@@ -2,11 +2,12 @@
 # bench/indoor_ablation/run.sh BUILD_DIR OUT_DIR [ITERATIONS] [SEEDS]
 # The ablation of issue 11 (seed Fig. 3.34 / 3.35): the variants of domains/indoor.ksm built
 # by `cmake --build BUILD_DIR --target indoor_ablation` (weak prior only, + the seed's
-# same-length prior, + no slivers, + not on walls) and the shipped binary (full knowledge), on
-# lab_b.png and five Bormann maps. Per variant and map (median over SEEDS): K, units, R / P /
-# IoU against the Bormann ground truth (segmentation.png, else labels.png), the conditional
-# prior bindings (SaLe pairs) more than 2 sd off, and the spread (sd) of the unit count and of
-# the log posterior over the last 1,000 iterations (samples.jsonl, thin 1).
+# same-length prior, + no slivers, + not on walls, + one space) and the shipped binary (full
+# knowledge: + no hollow units), on lab_b.png and five Bormann maps. Per variant and map
+# (median over SEEDS): K, units, R / P / IoU against the Bormann ground truth
+# (segmentation.png, else labels.png), the conditional prior bindings (SaLe pairs) more than
+# 2 sd off, and the spread (sd) of the unit count and of the log posterior over the last
+# 1,000 iterations (samples.jsonl, thin 1).
 set -euo pipefail
 build=$1; out=$2; iters=${3:-20000}; seeds=${4:-"1 2 3"}
 here=$(cd "$(dirname "$0")" && pwd)
@@ -17,7 +18,7 @@ if [ ! -d "$maps" ]; then
 fi
 scorer=$build/bin/roomseg_score
 names=(lab_b office_a office_c lab_a_scan lab_d_scan Freiburg52_scan)
-variants=(weak seed no_sliver not_wall full)
+variants=(weak seed no_sliver not_wall one_space full)
 mkdir -p "$out"
 printf '| variant | map | K | units | R | P | IoU | SaLe > 2 sd | sd units (last 1000) | sd log p (last 1000) | it/s |\n'
 printf '|---|---|---|---|---|---|---|---|---|---|---|\n'

@@ -24,8 +24,9 @@ namespace ksmc::stdlib::indoor::blocks {
 // i-th unit in world order (sorted by id).
 class Scene {
  public:
-  Scene(const World& world, double resolution, const ClassGrid* map = nullptr)
-      : world_(&world), resolution_(resolution), map_(map) {}
+  Scene(const World& world, double resolution, const ClassGrid* map = nullptr,
+        const cv::Mat1f* free_distance = nullptr)
+      : world_(&world), resolution_(resolution), map_(map), free_distance_(free_distance) {}
 
   const Unit& rect(std::int32_t i) const { return world_->units()[static_cast<std::size_t>(i)]; }
   std::span<const Unit> rects() const { return world_->units(); }
@@ -35,12 +36,15 @@ class Scene {
 
   double resolution() const { return resolution_; }  // metres per cell
   const ClassGrid* map() const { return map_; }       // the classified map, when the kit has one
+  // free_distance(map) of that map (stdlib/indoor/free_distance.h), when the kit has one.
+  const cv::Mat1f* free_distance() const { return free_distance_; }
   const World& world() const { return *world_; }
 
  private:
   const World* world_;
   double resolution_;
   const ClassGrid* map_;
+  const cv::Mat1f* free_distance_;
 };
 
 // The moves the proposal sources make (`makes F / R` in stdlib/indoor.ksm).
@@ -63,6 +67,12 @@ bool thin(const Scene& s, const Unit& u, double min_width);
 // unknown): the unit lies on walls or outside the mapped space. Measured on a grid of up to
 // 24 x 24 sample points over the unit; false without a map.
 bool blocked(const Scene& s, const Unit& u, double max_fraction);
+// The unit holds a region the sensor never saw into, wider than `min_width` (m): a point of the
+// unit lies farther than min_width / 2 from every free cell of the map (a courtyard, a light
+// well, unexplored space past an outer wall). Points are sampled every min_width / 4 over the
+// unit, so a region is always found when it holds a disc 1.35 x min_width wide and never when
+// it holds none min_width wide. False without the map's free distance.
+bool hollow(const Scene& s, const Unit& u, double min_width);
 // Two units with connecting walls (as geom.adjacent with `dilate`) whose common stretch has a
 // free run longer than `max_gap` (m) along the line midway between the two walls: no wall
 // separates them there, wider than a door. False without a map. Symmetric.

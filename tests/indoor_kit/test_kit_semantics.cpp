@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "stdlib/indoor/blocks/walls.h"
+#include "stdlib/indoor/free_distance.h"
 #include "stdlib/indoor/kit/semantic_layer.h"
 #include "stdlib/indoor/map_evidence.h"
 #include "tests/indoor_kit/binding.h"
@@ -84,6 +85,37 @@ TEST_CASE("multi_door counts the doors attached to a unit", "[indoor_kit]") {
   CHECK(blk::geom::multi_door(s, s.rect(2), s.segments(), 2));
   CHECK(!blk::geom::multi_door(s, s.rect(2), s.segments(), 3));
   CHECK(!blk::geom::multi_door(s, s.rect(0), s.segments().subspan(0, 1), 2));
+}
+
+TEST_CASE("hollow: a unit over a region the sensor never saw into, wider than min_width", "[indoor_kit]") {
+  // 12 x 10 m of free space at 0.05 m per cell round an unknown block 6 m square (x 60..180,
+  // y 40..160), and a 1 m square of unknown speckle in a corner. Points are sampled every
+  // min_width / 4, so a region is always found when it holds a disc of 1.35 x min_width, and
+  // never when it holds none of min_width.
+  ClassGrid map(200, 240, static_cast<std::uint8_t>(Cell::Free));
+  map(cv::Rect(60, 40, 120, 120)).setTo(static_cast<std::uint8_t>(Cell::Unknown));
+  map(cv::Rect(5, 5, 20, 20)).setTo(static_cast<std::uint8_t>(Cell::Unknown));
+  const cv::Mat1f field = free_distance(map);
+  CHECK(field(100, 120) == Approx(60.0f));  // the block's centre, 3 m from free space
+  CHECK(field(0, 0) == 0.0f);
+  // The whole map; the block alone; a strip above it; the whole map turned by 0.3 rad.
+  const World w = world_of({{120, 100, 240, 200, 0}, {120, 100, 120, 120, 0}, {120, 18, 240, 36, 0}, {120, 100, 170, 170, 0.3}});
+  const blk::Scene s(w, 0.05, &map, &field);
+  CHECK(blk::geom::hollow(s, s.rect(0), 4.0));   // a 6 m block holds a 4 m disc
+  CHECK(!blk::geom::hollow(s, s.rect(0), 6.5));  // but no 6.5 m one
+  CHECK(blk::geom::hollow(s, s.rect(1), 4.0));
+  CHECK(blk::geom::hollow(s, s.rect(3), 4.0));
+  CHECK(!blk::geom::hollow(s, s.rect(2), 4.0));  // free space and the speckle
+  CHECK(!blk::geom::hollow(s, s.rect(2), 1.2));  // the speckle holds no 1.2 m disc
+  CHECK(blk::geom::hollow(s, s.rect(2), 0.6));   // but a 0.6 m one
+  // Past the map's edge counts as unseen: a unit reaching 3 m beyond it.
+  const World out = world_of({{260, 100, 120, 100, 0}});
+  CHECK(blk::geom::hollow(blk::Scene(out, 0.05, &map, &field), out.units()[0], 4.0));
+  // Without the field (a kit with no map) nothing is hollow.
+  CHECK(!blk::geom::hollow(blk::Scene(w, 0.05, &map), s.rect(0), 4.0));
+  // A map with no free cell: every cell is far from free space.
+  const ClassGrid blind(50, 50, static_cast<std::uint8_t>(Cell::Unknown));
+  CHECK(free_distance(blind)(25, 25) > 50.0f);
 }
 
 TEST_CASE("the semantic layer types the units from the type group and is cached by evidence", "[indoor_kit]") {

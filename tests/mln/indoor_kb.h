@@ -13,7 +13,7 @@ namespace ksmc::tests::mln {
 struct IndoorKb {
   runtime::mln::Program program;
   std::int32_t unit = 0;
-  std::int32_t roli = 0, coli = 0, hali = 0, muldoor = 0, adj = 0, thin = 0, blocked = 0, open_join = 0;
+  std::int32_t roli = 0, coli = 0, hali = 0, muldoor = 0, adj = 0, thin = 0, blocked = 0, hollow = 0, open_join = 0;
   std::int32_t room = 0, corr = 0, hall = 0, other = 0, sale = 0;
 
   IndoorKb() {
@@ -33,6 +33,7 @@ struct IndoorKb {
     adj = pred("Adj", 2, false);
     thin = pred("Thin", 1, false);
     blocked = pred("Blocked", 1, false);
+    hollow = pred("Hollow", 1, false);
     open_join = pred("OpenJoin", 2, false);
     room = pred("Room", 1, true);
     corr = pred("Corr", 1, true);
@@ -76,7 +77,8 @@ struct IndoorKb {
     // The knowledge against topological defects (issue 11): evidence only.
     rule("no_sliver", 31, 1.0, "!Thin(u)", 1, {{thin, true, {0}}});
     rule("not_wall", 33, 1.0, "!Blocked(u)", 1, {{blocked, true, {0}}});
-    rule("one_space", 36, std::exp(3.0) / (1.0 + std::exp(3.0)), "!OpenJoin(a, b)", 2, {{open_join, true, {0, 1}}});
+    rule("no_hollow", 37, 1.0, "!Hollow(u)", 1, {{hollow, true, {0}}});
+    rule("one_space", 40, std::exp(3.0) / (1.0 + std::exp(3.0)), "!OpenJoin(a, b)", 2, {{open_join, true, {0, 1}}});
   }
 };
 

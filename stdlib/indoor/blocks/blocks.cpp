@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "stdlib/indoor/blocks/walls.h"
+#include "stdlib/indoor/free_distance.h"
 
 namespace ksmc::stdlib::indoor::blocks {
 
@@ -60,6 +61,23 @@ bool blocked(const Scene& s, const Unit& u, double max_fraction) {
         ++not_free;
     }
   return not_free > max_fraction * total;
+}
+
+bool hollow(const Scene& s, const Unit& u, double min_width) {
+  const cv::Mat1f* field = s.free_distance();
+  if (field == nullptr || field->empty()) return false;
+  const double reach = 0.5 * min_width / s.resolution();  // cells
+  const double step = std::max(1.0, 0.5 * reach);
+  const OrientedRect& r = u.rect;
+  const double c = std::cos(r.theta), sn = std::sin(r.theta);
+  const int nu = std::max(1, static_cast<int>(std::ceil(std::abs(r.w) / step)));
+  const int nv = std::max(1, static_cast<int>(std::ceil(std::abs(r.h) / step)));
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      const double lx = ((i + 0.5) / nu - 0.5) * r.w, ly = ((j + 0.5) / nv - 0.5) * r.h;
+      if (free_distance_at(*field, r.cx + c * lx - sn * ly, r.cy + sn * lx + c * ly) > reach) return true;
+    }
+  return false;
 }
 
 bool open_join(const Scene& s, const Unit& a, const Unit& b, double dilate, double max_gap) {

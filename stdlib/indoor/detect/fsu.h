@@ -24,12 +24,19 @@ struct FsuParams {
   double margin = 1.0;          // each side pushed out by this, cells, onto the wall cells
   WallScoreParams wall{};       // for the weight
   double weight_floor = 0.05;   // weight = max(eq. 3.10, floor)
+  // A component that fills less than this share of its frame rectangle (a ring of corridors
+  // round a courtyard, an L-shaped wing) also gives the largest frame-aligned rectangle inside
+  // it, after closing holes of up to 2 x inner_close cells (speckle). Once that piece is
+  // explained, a later refresh proposes the next. 0: never; only with frame_deg.
+  double inner_below = 0.95;
+  int inner_close = 2;
   std::size_t max_candidates = 200;  // largest components first
 };
 
 // `explained`: CV_8UC1 of the grid's size, non-zero where the current world explains the
 // map (e.g. the rasterised units), or empty for "nothing explained". Candidates are sorted
-// by component area, largest first. Throws std::invalid_argument on bad inputs.
+// by component area, largest first (a component's inner rectangle right after its own).
+// Throws std::invalid_argument on bad inputs.
 std::vector<UnitCandidate> detect_fsu_units(const ClassGrid& grid, const cv::Mat1b& explained,
                                             const FsuParams& params = {});
 

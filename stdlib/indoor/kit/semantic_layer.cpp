@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "runtime/domain/labels.h"
+#include "stdlib/indoor/free_distance.h"
 
 namespace ksmc::stdlib::indoor::kit {
 
@@ -20,10 +21,15 @@ dom::SemanticOptions options_for(const KitPlan& plan, std::uint64_t seed) {
 
 SemanticLayer::SemanticLayer(const blocks::Binding& binding, const KitPlan& plan, double resolution,
                              const ClassGrid* map, std::uint64_t seed)
-    : binding_(binding), plan_(plan), resolution_(resolution), map_(map), sem_(binding, options_for(plan, seed)) {}
+    : binding_(binding),
+      plan_(plan),
+      resolution_(resolution),
+      map_(map),
+      free_distance_(map != nullptr ? free_distance(*map) : cv::Mat1f()),
+      sem_(binding, options_for(plan, seed)) {}
 
 SemanticResult SemanticLayer::evaluate(const World& w) {
-  const blocks::Scene scene(w, resolution_, map_);
+  const blocks::Scene scene(w, resolution_, map_, &free_distance_);
   return finish(scene, sem_.evaluate(scene, w.units().size()));
 }
 
@@ -38,7 +44,7 @@ SemanticResult SemanticLayer::evaluate(const World& w, const SemanticResult& bas
     const auto it = std::lower_bound(base.ids.begin(), base.ids.end(), id);
     if (it != base.ids.end() && *it == id) idx.push_back(enumerated + static_cast<std::int32_t>(it - base.ids.begin()));
   }
-  const blocks::Scene scene(w, resolution_, map_);
+  const blocks::Scene scene(w, resolution_, map_, &free_distance_);
   return finish(scene, sem_.update(scene, units.size(), idx, *base.outcome));
 }
 

@@ -75,6 +75,7 @@ class SemanticLayer {
   const KitPlan& plan_;
   double resolution_;
   const ClassGrid* map_;
+  cv::Mat1f free_distance_;  // free_distance(*map_), for geom.hollow; empty without a map
   runtime::domain::Semantics<blocks::Scene> sem_;
 };
 

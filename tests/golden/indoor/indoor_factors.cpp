@@ -29,6 +29,7 @@ const mln::Program& program() {
     p.add_predicate({"Adj", {kType_unit, kType_unit}, false, false, -1});
     p.add_predicate({"Thin", {kType_unit}, false, false, -1});
     p.add_predicate({"Blocked", {kType_unit}, false, false, -1});
+    p.add_predicate({"Hollow", {kType_unit}, false, false, -1});
     p.add_predicate({"OpenJoin", {kType_unit, kType_unit}, false, false, -1});
     p.add_predicate({"Room", {kType_unit}, true, false, -1});
     p.add_predicate({"Corr", {kType_unit}, true, false, -1});
@@ -92,6 +93,11 @@ const mln::Program& program() {
                   {{"u", kType_unit, false}},
                   {{kPred_Blocked, true, {mln::Term::var(0)}}},
                   mln::kHardWeight, true, "!Blocked(u)", {"domains/indoor.ksm", 0}});
+    // no_hollow: hard !Hollow(u)
+    p.add_clause({"no_hollow",
+                  {{"u", kType_unit, false}},
+                  {{kPred_Hollow, true, {mln::Term::var(0)}}},
+                  mln::kHardWeight, true, "!Hollow(u)", {"domains/indoor.ksm", 0}});
     // one_space: !OpenJoin(a, b)
     p.add_clause({"one_space",
                   {{"a", kType_unit, false}, {"b", kType_unit, false}},
@@ -263,6 +269,18 @@ void ground_not_wall(mln::FactorContext& g, std::int32_t clause) {
   }
 }
 
+// no_hollow: hard !Hollow(u)
+void ground_no_hollow(mln::FactorContext& g, std::int32_t clause) {
+  const std::int32_t n_unit = g.size(kType_unit);
+  for (std::int32_t v_u = 0; v_u < n_unit; ++v_u) {
+    if (!g.ev(kPred_Hollow, v_u)) {  // !Hollow(u)
+      continue;
+    }
+    g.begin();
+    g.hard(clause, {v_u});
+  }
+}
+
 // one_space: !OpenJoin(a, b)
 void ground_one_space(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_unit = g.size(kType_unit);
@@ -295,6 +313,7 @@ mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) 
   ground_sale_3041(g, clause++);
   ground_no_sliver(g, clause++);
   ground_not_wall(g, clause++);
+  ground_no_hollow(g, clause++);
   ground_one_space(g, clause++);
   mln::fold_forced_atoms(grounding);
   return grounding;

@@ -21,12 +21,13 @@ enum Pred : std::int32_t {
   kPred_Adj = 4,  // evidence Adj(unit, unit)
   kPred_Thin = 5,  // evidence Thin(unit)
   kPred_Blocked = 6,  // evidence Blocked(unit)
-  kPred_OpenJoin = 7,  // evidence OpenJoin(unit, unit)
-  kPred_Room = 8,  // query Room(unit)
-  kPred_Corr = 9,  // query Corr(unit)
-  kPred_Hall = 10,  // query Hall(unit)
-  kPred_Other = 11,  // query Other(unit)
-  kPred_SaLe = 12,  // query SaLe(unit, unit)
+  kPred_Hollow = 7,  // evidence Hollow(unit)
+  kPred_OpenJoin = 8,  // evidence OpenJoin(unit, unit)
+  kPred_Room = 9,  // query Room(unit)
+  kPred_Corr = 10,  // query Corr(unit)
+  kPred_Hall = 11,  // query Hall(unit)
+  kPred_Other = 12,  // query Other(unit)
+  kPred_SaLe = 13,  // query SaLe(unit, unit)
 };
 
 // The clause program this file was generated from: names, weights, source locations.

@@ -1,0 +1,29 @@
+#include "stdlib/indoor/free_distance.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <opencv2/imgproc.hpp>
+
+namespace ksmc::stdlib::indoor {
+
+cv::Mat1f free_distance(const ClassGrid& map) {
+  cv::Mat1f out(map.rows, map.cols, 0.0f);
+  if (map.empty()) return out;
+  const cv::Mat1b not_free = map != static_cast<std::uint8_t>(Cell::Free);  // 255 where not free
+  if (cv::countNonZero(not_free) == static_cast<int>(map.total())) {
+    out.setTo(static_cast<float>(std::hypot(map.rows, map.cols)));
+    return out;
+  }
+  cv::distanceTransform(not_free, out, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
+  return out;
+}
+
+double free_distance_at(const cv::Mat1f& field, double col, double row) {
+  if (field.empty()) return 0.0;
+  const int c = static_cast<int>(std::floor(col)), r = static_cast<int>(std::floor(row));
+  const int cc = std::clamp(c, 0, field.cols - 1), rc = std::clamp(r, 0, field.rows - 1);
+  return field(rc, cc) + std::hypot(c - cc, r - rc);
+}
+
+}  // namespace ksmc::stdlib::indoor
