@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <opencv2/imgproc.hpp>
 
@@ -21,9 +22,10 @@ cv::Mat1f free_distance(const ClassGrid& map) {
 
 double free_distance_at(const cv::Mat1f& field, double col, double row) {
   if (field.empty()) return 0.0;
-  const int c = static_cast<int>(std::floor(col)), r = static_cast<int>(std::floor(row));
-  const int cc = std::clamp(c, 0, field.cols - 1), rc = std::clamp(r, 0, field.rows - 1);
-  return field(rc, cc) + std::hypot(c - cc, r - rc);
+  if (!std::isfinite(col) || !std::isfinite(row)) return std::numeric_limits<double>::infinity();
+  const double c = std::floor(col), r = std::floor(row);  // clamped as doubles: any finite value is safe
+  const double cc = std::clamp(c, 0.0, field.cols - 1.0), rc = std::clamp(r, 0.0, field.rows - 1.0);
+  return field(static_cast<int>(rc), static_cast<int>(cc)) + std::hypot(c - cc, r - rc);
 }
 
 }  // namespace ksmc::stdlib::indoor

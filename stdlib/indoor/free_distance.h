@@ -14,7 +14,7 @@ namespace ksmc::stdlib::indoor {
 cv::Mat1f free_distance(const ClassGrid& map);
 
 // The field at a point (cells, image convention), also outside the map: the distance of the
-// nearest cell of the map plus the distance to the map's edge.
+// nearest cell of the map plus the distance to the map's edge; infinite at a non-finite point.
 double free_distance_at(const cv::Mat1f& field, double col, double row);
 
 }  // namespace ksmc::stdlib::indoor

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 #include "stdlib/indoor/blocks/walls.h"
 #include "stdlib/indoor/free_distance.h"
@@ -111,6 +112,9 @@ TEST_CASE("hollow: a unit over a region the sensor never saw into, wider than mi
   // Past the map's edge counts as unseen: a unit reaching 3 m beyond it.
   const World out = world_of({{260, 100, 120, 100, 0}});
   CHECK(blk::geom::hollow(blk::Scene(out, 0.05, &map, &field), out.units()[0], 4.0));
+  // Far outside, and at a point that is no point: no overflow, unseen.
+  CHECK(free_distance_at(field, 1e12, -1e12) > 1e11);
+  CHECK(std::isinf(free_distance_at(field, std::nan(""), 3.0)));
   // Without the field (a kit with no map) nothing is hollow.
   CHECK(!blk::geom::hollow(blk::Scene(w, 0.05, &map), s.rect(0), 4.0));
   // A map with no free cell: every cell is far from free space.
