@@ -25,7 +25,8 @@ double free_distance_at(const cv::Mat1f& field, double col, double row) {
   if (!std::isfinite(col) || !std::isfinite(row)) return std::numeric_limits<double>::infinity();
   const double c = std::floor(col), r = std::floor(row);  // clamped as doubles: any finite value is safe
   const double cc = std::clamp(c, 0.0, field.cols - 1.0), rc = std::clamp(r, 0.0, field.rows - 1.0);
-  return field(static_cast<int>(rc), static_cast<int>(cc)) + std::hypot(c - cc, r - rc);
+  const double inside = field(static_cast<int>(rc), static_cast<int>(cc));
+  return c == cc && r == rc ? inside : inside + std::hypot(c - cc, r - rc);
 }
 
 }  // namespace ksmc::stdlib::indoor
