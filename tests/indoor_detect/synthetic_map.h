@@ -118,6 +118,18 @@ inline double iou(const OrientedRect& a, const OrientedRect& b) {
 
 // PNG maps: >= 250 free; `bormann` (the benchmark's convention): everything else occupied;
 // otherwise <= 50 occupied and the rest unknown (SLAM maps such as lab_b.png).
+// The explained mask of a world: 255 inside any of the rectangles (their filled corners).
+inline cv::Mat1b raster(const ClassGrid& g, const std::vector<OrientedRect>& rects) {
+  cv::Mat1b m = cv::Mat1b::zeros(g.size());
+  for (const auto& r : rects) {
+    const auto c = r.corners();
+    cv::Point pts[4];
+    for (std::size_t i = 0; i < 4; ++i) pts[i] = cv::Point(int(std::lround(c[i].x)), int(std::lround(c[i].y)));
+    cv::fillConvexPoly(m, pts, 4, cv::Scalar(255));
+  }
+  return m;
+}
+
 inline ClassGrid load_png_map(const std::string& path, bool bormann) {
   const cv::Mat1b img = cv::imread(path, cv::IMREAD_GRAYSCALE);
   ClassGrid g(img.rows, img.cols, static_cast<unsigned char>(Cell::Unknown));

@@ -29,17 +29,6 @@ bool contains(const OrientedRect& r, Point2 p, double tol = 0.0) {
   return std::abs(u) <= 0.5 * r.w + tol && std::abs(v) <= 0.5 * r.h + tol;
 }
 
-cv::Mat1b raster(const ClassGrid& g, const std::vector<OrientedRect>& rects) {
-  cv::Mat1b m = cv::Mat1b::zeros(g.size());
-  for (const auto& r : rects) {
-    const auto c = r.corners();
-    cv::Point pts[4];
-    for (int i = 0; i < 4; ++i) pts[i] = cv::Point(int(std::lround(c[i].x)), int(std::lround(c[i].y)));
-    cv::fillConvexPoly(m, pts, 4, cv::Scalar(255));
-  }
-  return m;
-}
-
 double dist(Point2 a, Point2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
 Point2 mid(Point2 a, Point2 b) { return {0.5 * (a.x + b.x), 0.5 * (a.y + b.y)}; }
 

@@ -9,9 +9,11 @@
 
 #include "stdlib/indoor/detect/fsu.h"
 #include "stdlib/indoor/detect/largest_rect.h"
+#include "synthetic_map.h"
 
 using namespace ksmc::stdlib::indoor;
 using namespace ksmc::stdlib::indoor::detect;
+using ksmc::tests::indoor_detect::raster;
 
 namespace {
 
@@ -102,12 +104,7 @@ TEST_CASE("FSU: a component that fills its box poorly also gives its largest inn
   FsuParams p;
   p.frame_deg = 0.0;
   const OrientedRect first = detect_fsu_units(g, cv::Mat1b(), p)[1].rect;
-  cv::Mat1b explained = cv::Mat1b::zeros(g.size());
-  const auto c = first.corners();
-  cv::Point q[4];
-  for (int i = 0; i < 4; ++i) q[i] = cv::Point(static_cast<int>(std::lround(c[static_cast<std::size_t>(i)].x)), static_cast<int>(std::lround(c[static_cast<std::size_t>(i)].y)));
-  cv::fillConvexPoly(explained, q, 4, cv::Scalar(255));
-  const auto next = detect_fsu_units(g, explained, p);
+  const auto next = detect_fsu_units(g, raster(g, {first}), p);
   REQUIRE(next.size() == 2);
   CHECK(free_share(g, next[1].rect) > 0.9);
   CHECK(std::min(next[1].rect.w, next[1].rect.h) == Approx(30).margin(5));

@@ -15,6 +15,19 @@ namespace {
 std::pair<const Unit*, const Unit*> ordered(const Unit& a, const Unit& b) {
   return a.id <= b.id ? std::pair{&a, &b} : std::pair{&b, &a};
 }
+
+// Calls f(x, y) (cells) at the centres of an nu x nv grid over the rectangle, in its own frame,
+// until f returns true; says whether it did.
+template <class F>
+bool any_sample(const OrientedRect& r, int nu, int nv, F&& f) {
+  const double c = std::cos(r.theta), sn = std::sin(r.theta);
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      const double lx = ((i + 0.5) / nu - 0.5) * r.w, ly = ((j + 0.5) / nv - 0.5) * r.h;
+      if (f(r.cx + c * lx - sn * ly, r.cy + sn * lx + c * ly)) return true;
+    }
+  return false;
+}
 }  // namespace
 
 namespace geom {
@@ -48,18 +61,15 @@ bool blocked(const Scene& s, const Unit& u, double max_fraction) {
   const ClassGrid* map = s.map();
   if (map == nullptr) return false;
   const OrientedRect& r = u.rect;
-  const double c = std::cos(r.theta), sn = std::sin(r.theta);
   const int nu = std::clamp(static_cast<int>(std::abs(r.w)), 1, 24), nv = std::clamp(static_cast<int>(std::abs(r.h)), 1, 24);
   int total = 0, not_free = 0;
-  for (int i = 0; i < nu; ++i)
-    for (int j = 0; j < nv; ++j) {
-      const double lx = ((i + 0.5) / nu - 0.5) * r.w, ly = ((j + 0.5) / nv - 0.5) * r.h;
-      const int col = static_cast<int>(std::floor(r.cx + c * lx - sn * ly));
-      const int row = static_cast<int>(std::floor(r.cy + sn * lx + c * ly));
-      ++total;
-      if (row < 0 || col < 0 || row >= map->rows || col >= map->cols || (*map)(row, col) != static_cast<std::uint8_t>(Cell::Free))
-        ++not_free;
-    }
+  any_sample(r, nu, nv, [&](double x, double y) {
+    const int col = static_cast<int>(std::floor(x)), row = static_cast<int>(std::floor(y));
+    ++total;
+    if (row < 0 || col < 0 || row >= map->rows || col >= map->cols || (*map)(row, col) != static_cast<std::uint8_t>(Cell::Free))
+      ++not_free;
+    return false;
+  });
   return not_free > max_fraction * total;
 }
 
@@ -69,15 +79,9 @@ bool hollow(const Scene& s, const Unit& u, double min_width) {
   const double reach = 0.5 * min_width / s.resolution();  // cells
   const double step = std::max(1.0, 0.5 * reach);
   const OrientedRect& r = u.rect;
-  const double c = std::cos(r.theta), sn = std::sin(r.theta);
   const int nu = std::max(1, static_cast<int>(std::ceil(std::abs(r.w) / step)));
   const int nv = std::max(1, static_cast<int>(std::ceil(std::abs(r.h) / step)));
-  for (int i = 0; i < nu; ++i)
-    for (int j = 0; j < nv; ++j) {
-      const double lx = ((i + 0.5) / nu - 0.5) * r.w, ly = ((j + 0.5) / nv - 0.5) * r.h;
-      if (free_distance_at(*field, r.cx + c * lx - sn * ly, r.cy + sn * lx + c * ly) > reach) return true;
-    }
-  return false;
+  return any_sample(r, nu, nv, [&](double x, double y) { return free_distance_at(*field, x, y) > reach; });
 }
 
 bool open_join(const Scene& s, const Unit& a, const Unit& b, double dilate, double max_gap) {

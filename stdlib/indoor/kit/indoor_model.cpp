@@ -79,7 +79,7 @@ IndoorModel::IndoorModel(std::shared_ptr<const SharedInput> in) : in_(std::move(
     pools_.push_back(std::move(pool));
   }
   if (in_->plan.semantic) {
-    sem_.emplace(*in_->binding, in_->plan, in_->resolution, &in_->grid, in_->seed);
+    sem_.emplace(*in_->binding, in_->plan, in_->resolution, &in_->grid, in_->seed, &in_->free_distance);
     adopt(sem_->evaluate(sw_.world()), KernelKind::Add);
   }
 }

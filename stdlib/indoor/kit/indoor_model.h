@@ -47,6 +47,7 @@ struct SharedInput {
   std::vector<std::vector<CandidateUnit>> fixed_units;  // per pool: WBU + RPB candidates
   double frame_deg = 0.0;                               // dominant orientation (FSU frame)
   std::unique_ptr<MapEvidence> evidence;
+  cv::Mat1f free_distance;  // free_distance(grid): the field geom.hollow reads, once per map
   std::uint64_t seed = 1;
 };
 

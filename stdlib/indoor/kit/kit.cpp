@@ -23,6 +23,7 @@
 #include "stdlib/indoor/io/posterior_plot.h"
 #include "stdlib/indoor/io/route.h"
 #include "stdlib/indoor/io/world_writer.h"
+#include "stdlib/indoor/free_distance.h"
 #include "stdlib/indoor/kit/after_run.h"
 #include "stdlib/indoor/kit/indoor_model.h"
 #include "stdlib/indoor/kit/solid_interior.h"
@@ -275,6 +276,7 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
   shared->kernel.orientation.dominant = fixed.frame_deg * kPiD / 180.0;
   cli::stage(in, "indexing the map evidence");
   shared->evidence = std::make_unique<MapEvidence>(map->grid, 1);
+  shared->free_distance = free_distance(shared->grid);
 
   cli::DomainSetup setup;
   const blocks::KernelDecl* first = binding->kernels.data();  // KitPlan::kernels has the same order

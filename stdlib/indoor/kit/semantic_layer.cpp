@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "runtime/domain/labels.h"
-#include "stdlib/indoor/free_distance.h"
 
 namespace ksmc::stdlib::indoor::kit {
 
@@ -20,16 +19,16 @@ dom::SemanticOptions options_for(const KitPlan& plan, std::uint64_t seed) {
 }  // namespace
 
 SemanticLayer::SemanticLayer(const blocks::Binding& binding, const KitPlan& plan, double resolution,
-                             const ClassGrid* map, std::uint64_t seed)
+                             const ClassGrid* map, std::uint64_t seed, const cv::Mat1f* free_distance)
     : binding_(binding),
       plan_(plan),
       resolution_(resolution),
       map_(map),
-      free_distance_(map != nullptr ? free_distance(*map) : cv::Mat1f()),
+      free_distance_(free_distance),
       sem_(binding, options_for(plan, seed)) {}
 
 SemanticResult SemanticLayer::evaluate(const World& w) {
-  const blocks::Scene scene(w, resolution_, map_, &free_distance_);
+  const blocks::Scene scene(w, resolution_, map_, free_distance_);
   return finish(scene, sem_.evaluate(scene, w.units().size()));
 }
 
@@ -44,7 +43,7 @@ SemanticResult SemanticLayer::evaluate(const World& w, const SemanticResult& bas
     const auto it = std::lower_bound(base.ids.begin(), base.ids.end(), id);
     if (it != base.ids.end() && *it == id) idx.push_back(enumerated + static_cast<std::int32_t>(it - base.ids.begin()));
   }
-  const blocks::Scene scene(w, resolution_, map_, &free_distance_);
+  const blocks::Scene scene(w, resolution_, map_, free_distance_);
   return finish(scene, sem_.update(scene, units.size(), idx, *base.outcome));
 }
 

@@ -50,8 +50,10 @@ struct SemanticResult {
 
 class SemanticLayer {
  public:
+  // `free_distance`: free_distance(*map) (stdlib/indoor/free_distance.h), the field geom.hollow
+  // reads; nullptr (or empty): no unit is hollow. Both pointers must outlive the layer.
   SemanticLayer(const blocks::Binding& binding, const KitPlan& plan, double resolution, const ClassGrid* map,
-                std::uint64_t seed);
+                std::uint64_t seed, const cv::Mat1f* free_distance = nullptr);
 
   SemanticResult evaluate(const World& w);
   // The same, relative to `base` (the result of a world with the same units, ids in the same
@@ -75,7 +77,7 @@ class SemanticLayer {
   const KitPlan& plan_;
   double resolution_;
   const ClassGrid* map_;
-  cv::Mat1f free_distance_;  // free_distance(*map_), for geom.hollow; empty without a map
+  const cv::Mat1f* free_distance_;
   runtime::domain::Semantics<blocks::Scene> sem_;
 };
 
