@@ -90,6 +90,12 @@ bool tilted(const Scene& s, Se3 pose, Vec3 size, double k, double min_angle) {
   return tilt_angle(box_of(s, pose, size)) > std::max(k * s.tilt_sigma(), min_angle);
 }
 
+bool sunk(const Scene& s, Se3 pose, Vec3 size, double k, double min_depth) {
+  constexpr std::int32_t kTable = 0;  // Scene::is_table
+  if (one_body(pose, size) && s.is_table(pose.body)) return false;
+  return s.box(kTable).max_z() - box_of(s, pose, size).min_z() > std::max(k * s.gap_sigma(), min_depth);
+}
+
 bool contact(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, double eps) {
   const EvidenceParams p = contact_params(s, eps);
   EvidenceParams& rec = s.relation_params_mut();

@@ -91,6 +91,10 @@ bool stable(const Scene& s, Se3 pose, Vec3 size, double tol);
 // (Scene::tilt_sigma, tilt_noise.h) and more than min_angle [rad] from the table normal: it
 // does not rest on a level face. Never holds in a scene with fewer than 3 objects resting on a face.
 bool tilted(const Scene& s, Se3 pose, Vec3 size, double k, double min_angle);
+// The box's lowest point lies below the table top by more than k standard deviations of the
+// scene's resting-gap noise (Scene::gap_sigma) and more than min_depth [m]: it cuts into the
+// table. Never holds for the table itself.
+bool sunk(const Scene& s, Se3 pose, Vec3 size, double k, double min_depth);
 // Touching without intersecting: gap at most eps [m] (extract_contact.h).
 bool contact(const Scene& s, Se3 pose_a, Vec3 size_a, Se3 pose_b, Vec3 size_b, double eps);
 // Penetration deeper than eps [m], or containment (extract_intersect.h).

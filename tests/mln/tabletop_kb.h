@@ -18,7 +18,8 @@ struct TabletopKb {
   std::int32_t object = 0;
   std::int32_t stable = 0, table = 0, hover = 0, contact = 0, intersect = 0, higher = 0;
   std::int32_t supported = 0, supportive = 0, hidden = 0, false_est = 0;
-  std::int32_t overlap = 0, flatter = 0, overhang = 0, leaning = 0, snugger = 0, blocks = 0, hides = 0, tilted = 0;
+  std::int32_t overlap = 0, flatter = 0, overhang = 0, leaning = 0, snugger = 0, blocks = 0, hides = 0, tilted = 0,
+               sunk = 0;
 
   TabletopKb() {
     using namespace runtime::mln;
@@ -48,6 +49,7 @@ struct TabletopKb {
     blocks = pred("blocks", 2, false);
     hides = pred("hides", 2, false);
     tilted = pred("tilted", 1, false);
+    sunk = pred("sunk", 1, false);
 
     // Literal shorthand: P(o) / !P(o) over variables 0 (o1) and 1 (o2).
     struct L {
@@ -99,7 +101,7 @@ struct TabletopKb {
          {{intersect, true, {0, 1}}, {false_est, false, {0}}, {false_est, false, {1}}});
     rule("r15", 24, 0.7, "supportive(o1) => !falseEst(o1)", 1, {{supportive, true, {0}}, {false_est, true, {0}}});
     rule("r16", 25, 0.9, "stable(o1) => !falseEst(o1)", 1, {{stable, true, {0}}, {false_est, true, {0}}});
-    // Additions of domains/tabletop.ksm (its lines 41-125).
+    // Additions of domains/tabletop.ksm (its lines 41-135).
     rule("r17", 41, 0.9, "!supported(o1)", 1, {{supported, true, {0}}});
     rule("r18", 46, 0.9, "stable(o1) ^ !table(o1) => supported(o1) v hidden(o1) v falseEst(o1)", 1,
          {{stable, true, {0}}, {table, false, {0}}, {supported, false, {0}}, {hidden, false, {0}},
@@ -128,6 +130,8 @@ struct TabletopKb {
     rule("r31", 118, 0.99, "hover(o1) ^ tilted(o1) => falseEst(o1)", 1,
          {{hover, true, {0}}, {tilted, true, {0}}, {false_est, false, {0}}});
     rule("r32", 125, 0.9, "!hover(o1)", 1, {{hover, true, {0}}});
+    rule("r33", 135, 0.9, "tilted(o1) ^ sunk(o1) => falseEst(o1)", 1,
+         {{tilted, true, {0}}, {sunk, true, {0}}, {false_est, false, {0}}});
   }
 };
 

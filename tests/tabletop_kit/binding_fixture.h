@@ -19,7 +19,7 @@ namespace gen = ksmc_generated::tabletop;
 // smaller box, flatter by 0.5 deg; overhang within 4 mm, beyond 5 mm; leaning beyond 10 deg,
 // within 4 mm; snugger within 4 mm, by one sigma of gap noise; blocks by a 6 mm margin, 3
 // keypoints and a tenth of them; hides by a 6 mm margin, 3 keypoints expected; tilted beyond
-// 3 sigma of the scene's tilt noise and 2 deg; the pose
+// 3 sigma of the scene's tilt noise and 2 deg; sunk beyond 1.5 sigma of its gap noise and 4 mm; the pose
 // estimate as a measurement, 3 mm / 1.5 deg).
 struct KsmValues {
   static constexpr double stable_tol = 0.17453292519943295;
@@ -43,6 +43,8 @@ struct KsmValues {
   static constexpr double hides_min_expected = 3.0;
   static constexpr double tilted_k = 3.0;
   static constexpr double tilted_min = 0.03490658503988659;  // 2 deg
+  static constexpr double sunk_k = 1.5;
+  static constexpr double sunk_min = 0.004;
   static constexpr double estimate_sigma_t = 0.003;                   // 3 mm
   static constexpr double estimate_sigma_r = 0.026179938779914945;    // 1.5 deg
   static constexpr bool sigma_from_scene = true;
@@ -77,6 +79,8 @@ struct SeedValues {
   static constexpr double hides_min_expected = KsmValues::hides_min_expected;
   static constexpr double tilted_k = KsmValues::tilted_k;
   static constexpr double tilted_min = KsmValues::tilted_min;
+  static constexpr double sunk_k = KsmValues::sunk_k;
+  static constexpr double sunk_min = KsmValues::sunk_min;
   static constexpr double estimate_sigma_t = KsmValues::estimate_sigma_t;  // not in the seed either
   static constexpr double estimate_sigma_r = KsmValues::estimate_sigma_r;
   static constexpr bool sigma_from_scene = false;  // the seed's fixed 1 px
@@ -134,6 +138,9 @@ struct Fixture {
   static bool tilted(const blk::Scene& s, const std::int32_t* c) {
     return blk::obb::tilted(s, s.se3(c[0]), s.vec3(c[0]), V::tilted_k, V::tilted_min);
   }
+  static bool sunk(const blk::Scene& s, const std::int32_t* c) {
+    return blk::obb::sunk(s, s.se3(c[0]), s.vec3(c[0]), V::sunk_k, V::sunk_min);
+  }
   static bool table(const blk::Scene& s, const std::int32_t* c) { return blk::scene::is_table(s, c[0]); }
 
   static blk::Binding make(bool decisions = true) {
@@ -165,6 +172,8 @@ struct Fixture {
       b.extractors.push_back({p, &hides, "extract hides(a, b) = obb.hides(...)"});
     if (const std::int32_t p = predicate_named("tilted"); p >= 0)
       b.extractors.push_back({p, &tilted, "extract tilted(o) = obb.tilted(...)"});
+    if (const std::int32_t p = predicate_named("sunk"); p >= 0)
+      b.extractors.push_back({p, &sunk, "extract sunk(o) = obb.sunk(...)"});
     b.extractors.push_back({gen::kPred_table, &table, "extract table(o) = scene.is_table(o)"});
     b.priors.push_back(blk::mln());
     b.likelihood = blk::keypoints::gaussian(1.0, V::robust, V::outlier_px, V::estimate_sigma_t, V::estimate_sigma_r,

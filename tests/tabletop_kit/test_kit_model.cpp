@@ -289,6 +289,31 @@ TEST_CASE("r31: a box in mid-air at a slant is false, a level one may stand on a
   CHECK(p("level").hidden_prob > 0.6);
 }
 
+TEST_CASE("r33: a box at a slant whose lowest point lies inside the table is false, one on its edge is not") {
+  // The four level cubes of floating_pair_scene, and two 10 cm cubes turned 20 deg about the y
+  // axis, apart from everything: "turned" with its lowest edge 8 mm inside the table (an
+  // estimate turned in place), "edge" standing on that edge (a box propped on something unseen).
+  auto scene = std::make_shared<tt::Scene>(*floating_pair_scene());
+  scene->objects.resize(4);
+  const double turn = 20.0 * std::numbers::pi / 180.0;
+  const double reach = 0.05 * (std::cos(turn) + std::sin(turn));  // centre to lowest edge
+  scene->objects.push_back(object("turned", {0.0, 0.4, reach - 0.008}, {0.1, 0.1, 0.1}, rot(20.0, Eigen::Vector3d::UnitY())));
+  scene->objects.push_back(object("edge", {0.4, 0.4, reach}, {0.1, 0.1, 0.1}, rot(20.0, Eigen::Vector3d::UnitY())));
+  const kit::TabletopModel m(scene, ksm_binding());
+  const std::string ev = evidence_of(m);
+  INFO(ev);
+  for (const char* id : {"turned", "edge"}) {
+    REQUIRE(holds(ev, std::string("tilted(") + id + ")"));
+    REQUIRE_FALSE(holds(ev, std::string("hover(") + id + ")"));
+    REQUIRE_FALSE(holds(ev, std::string("leaning(") + id + ")"));
+  }
+  REQUIRE(holds(ev, "sunk(turned)"));
+  REQUIRE_FALSE(holds(ev, "sunk(edge)"));
+  const auto p_false = false_probs(kit::result_of(m));
+  CHECK(p_false("turned") > 0.6);  // decided: false
+  CHECK(p_false("edge") < 0.4);    // the base rate r21: nothing speaks against it
+}
+
 TEST_CASE("r32: the prior scores a box resting on the table above the same box lifted into mid-air") {
   // r17 makes a supported box cost its weight; without r32 the MAP world of the lifted box
   // (hover, explained by a hidden object: r22) scored 1.35 higher, and the sampler drifted real

@@ -29,6 +29,7 @@ constexpr double kW_falseest_71e7 = 1.0986122886681098;  // prob 0.75
 constexpr double kW_falseest_ff24 = 1.0986122886681098;  // prob 0.75
 constexpr double kW_falseest_679c = 4.595119850134589;  // prob 0.99
 constexpr double kW_hover_164b = 2.1972245773362196;  // prob 0.9
+constexpr double kW_falseest_5dca = 2.1972245773362196;  // prob 0.9
 
 }  // namespace
 
@@ -54,6 +55,7 @@ const mln::Program& program() {
     p.add_predicate({"blocks", {kType_object, kType_object}, false, false, -1});
     p.add_predicate({"hides", {kType_object, kType_object}, false, false, -1});
     p.add_predicate({"tilted", {kType_object}, false, false, -1});
+    p.add_predicate({"sunk", {kType_object}, false, false, -1});
     // higher_95b7: hard !higher(o, o)
     p.add_clause({"higher_95b7",
                   {{"o", kType_object, false}},
@@ -213,6 +215,11 @@ const mln::Program& program() {
                   {{"o", kType_object, false}},
                   {{kPred_hover, true, {mln::Term::var(0)}}},
                   kW_hover_164b, false, "!hover(o)", {"domains/tabletop.ksm", 0}});
+    // falseest_5dca: tilted(o) ^ sunk(o) => falseEst(o)
+    p.add_clause({"falseest_5dca",
+                  {{"o", kType_object, false}},
+                  {{kPred_tilted, true, {mln::Term::var(0)}}, {kPred_sunk, true, {mln::Term::var(0)}}, {kPred_falseEst, false, {mln::Term::var(0)}}},
+                  kW_falseest_5dca, false, "tilted(o) ^ sunk(o) => falseEst(o)", {"domains/tabletop.ksm", 0}});
     return p;
   }();
   return p;
@@ -752,6 +759,24 @@ void ground_hover_164b(mln::FactorContext& g, std::int32_t clause) {
   }
 }
 
+// falseest_5dca: tilted(o) ^ sunk(o) => falseEst(o)
+void ground_falseest_5dca(mln::FactorContext& g, std::int32_t clause) {
+  const std::int32_t n_object = g.size(kType_object);
+  for (std::int32_t v_o = 0; v_o < n_object; ++v_o) {
+    if (!g.ev(kPred_tilted, v_o)) {  // !tilted(o)
+      g.satisfied(kW_falseest_5dca);
+      continue;
+    }
+    if (!g.ev(kPred_sunk, v_o)) {  // !sunk(o)
+      g.satisfied(kW_falseest_5dca);
+      continue;
+    }
+    g.begin();
+    if (g.query(kPred_falseEst, v_o, false)) { g.satisfied(kW_falseest_5dca); continue; }  // falseEst(o)
+    g.soft(kW_falseest_5dca, clause);
+  }
+}
+
 }  // namespace
 
 mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) {
@@ -790,6 +815,7 @@ mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) 
   ground_falseest_ff24(g, clause++);
   ground_falseest_679c(g, clause++);
   ground_hover_164b(g, clause++);
+  ground_falseest_5dca(g, clause++);
   mln::fold_forced_atoms(grounding);
   return grounding;
 }

@@ -32,6 +32,7 @@ enum Pred : std::int32_t {
   kPred_blocks = 15,  // evidence blocks(object, object)
   kPred_hides = 16,  // evidence hides(object, object)
   kPred_tilted = 17,  // evidence tilted(object)
+  kPred_sunk = 18,  // evidence sunk(object)
 };
 
 // The clause program this file was generated from: names, weights, source locations.

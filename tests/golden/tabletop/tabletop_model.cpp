@@ -67,6 +67,10 @@ bool extract_hides(const Scene& s, const std::int32_t* c) {
 bool extract_tilted(const Scene& s, const std::int32_t* c) {
   return blk::obb::tilted(s, s.se3(c[0]), s.vec3(c[0]), 3.0, 0.03490658503988659);
 }
+// extract sunk(o) = obb.sunk(pose[o], size[o], k = 1.5, min = 4 mm);
+bool extract_sunk(const Scene& s, const std::int32_t* c) {
+  return blk::obb::sunk(s, s.se3(c[0]), s.vec3(c[0]), 1.5, 0.004);
+}
 // extract table(o) = scene.is_table(o);
 bool extract_table(const Scene& s, const std::int32_t* c) {
   return blk::scene::is_table(s, c[0]);
@@ -91,6 +95,7 @@ blk::Binding make_binding() {
   b.extractors.push_back({kPred_blocks, &extract_blocks, "extract blocks(a, b) = obb.blocks(pose[a], size[a], pose[b], size[b], margin = 6 mm, min_keypoints = 3, min_fraction = 0.1);"});
   b.extractors.push_back({kPred_hides, &extract_hides, "extract hides(a, b) = obb.hides(pose[a], size[a], pose[b], size[b], margin = 6 mm, min_expected = 3);"});
   b.extractors.push_back({kPred_tilted, &extract_tilted, "extract tilted(o) = obb.tilted(pose[o], size[o], k = 3, min = 2 deg);"});
+  b.extractors.push_back({kPred_sunk, &extract_sunk, "extract sunk(o) = obb.sunk(pose[o], size[o], k = 1.5, min = 4 mm);"});
   b.extractors.push_back({kPred_table, &extract_table, "extract table(o) = scene.is_table(o);"});
   b.priors.push_back(blk::mln());
   b.likelihood = blk::keypoints::gaussian(1.0, true, 5.0, 0.003, 0.026179938779914945, true);
