@@ -111,7 +111,7 @@ struct TabletopKb {
           {false_est, false, {0}}});
     rule("r20", 53, 0.9, "!stable(o1) => !hidden(o1)", 1, {{stable, false, {0}}, {hidden, true, {0}}});
     rule("r21", 57, 0.7, "!falseEst(o1)", 1, {{false_est, true, {0}}});
-    rule("r22", 58, 0.7, "!hidden(o1)", 1, {{hidden, true, {0}}});
+    rule("r22", 58, 0.65, "!hidden(o1)", 1, {{hidden, true, {0}}});
     rule("r23", 66, 0.9, "overlap(o1, o2) ^ stable(o1) ^ stable(o2) ^ flatter(o1, o2) => falseEst(o2)", 2,
          {{overlap, true, {0, 1}}, {stable, true, {0}}, {stable, true, {1}}, {flatter, true, {0, 1}},
           {false_est, false, {1}}});

@@ -1,0 +1,117 @@
+#!/usr/bin/python3
+"""Coordinate search over rule weights of domains/tabletop.ksm, scored by the kit itself.
+
+Each step sets one rule's `prob` to its neighbour on a ladder, rebuilds tabletop_family_eval
+(the weights are compiled in), scores training scenes of both generators and keeps the step
+when the objective rises by at least --min-gain. The objective is the sum of four pooled F1:
+false and hidden estimates on the independent generator and on the project's generator.
+
+The domain file is edited in place and restored at the end (also on an error or Ctrl-C); the
+best file found is written to --out. Score the result on seeds the search did not see before
+keeping any of it (docs/tabletop_families/base_rate_r22.md).
+
+  scripts/tabletop_weight_search.py --build build --out /tmp/best.ksm --lines 49,57,58
+
+--lines are the 1-based line numbers of the `prob` rules to search, in that order.
+"""
+import argparse
+import os
+import re
+import subprocess
+import sys
+
+LADDER = [0.6, 0.65, 0.7, 0.75, 0.85, 0.9, 0.95, 0.99]
+
+
+def weight(lines, i):
+    return float(re.match(r'^prob ([0-9.]+):', lines[i]).group(1))
+
+
+def with_weight(lines, i, w):
+    out = list(lines)
+    out[i] = re.sub(r'^prob [0-9.]+:', 'prob %g:' % w, out[i])
+    return out
+
+
+def pooled_f1(rows, n_col, prf_col):
+    tp = fp = fn = 0.0
+    for r in rows:
+        n = int(r[n_col])
+        p, rec, _ = (float(x) for x in r[prf_col].split())
+        t = rec * n
+        tp, fn = tp + t, fn + n - t
+        fp += t / p - t if p > 0 else 0.0
+    prec = tp / (tp + fp) if tp + fp else 0.0
+    rec = tp / (tp + fn) if tp + fn else 0.0
+    return 2 * prec * rec / (prec + rec) if prec + rec else 0.0
+
+
+def table_rows(out):
+    return [[c.strip() for c in l.strip().strip('|').split('|')] for l in out.split('\n')
+            if l.startswith('| ') and not l.startswith('| family')]
+
+
+def score(args):
+    subprocess.run(['cmake', '--build', args.build, '-j2', '--target', 'tabletop_family_eval'], check=True,
+                   stdout=subprocess.DEVNULL)
+    binary = os.path.join(args.build, 'bin', 'tabletop_family_eval')
+    runs = [[binary, '--generator', 'indep', '--scenes', str(args.indep_scenes), '--seed', str(args.indep_seed)],
+            [binary, '--scenes', str(args.project_scenes), '--seed', str(args.project_seed)]]
+    procs = [subprocess.Popen(r, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True) for r in runs]
+    parts = []
+    for p in procs:
+        out, _ = p.communicate()
+        if p.returncode:
+            raise RuntimeError('tabletop_family_eval failed')
+        rows = table_rows(out)
+        parts += [pooled_f1(rows, 3, 4), pooled_f1(rows, 5, 6)]
+    return sum(parts), parts
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument('--build', default='build')
+    ap.add_argument('--domain', default='domains/tabletop.ksm')
+    ap.add_argument('--out', required=True, help='the best domain file found')
+    ap.add_argument('--lines', required=True, help="comma-separated line numbers of `prob` rules, in search order")
+    ap.add_argument('--indep-seed', type=int, default=5)
+    ap.add_argument('--indep-scenes', type=int, default=30)
+    ap.add_argument('--project-seed', type=int, default=5)
+    ap.add_argument('--project-scenes', type=int, default=20)
+    ap.add_argument('--min-gain', type=float, default=0.006)
+    args = ap.parse_args()
+
+    original = open(args.domain).read()
+    lines = original.split('\n')
+    try:
+        best, parts = score(args)
+        print('start: J %.4f %s' % (best, ' '.join('%.3f' % x for x in parts)), flush=True)
+        for number in args.lines.split(','):
+            i = int(number) - 1
+            if not lines[i].startswith('prob '):
+                raise ValueError('%s:%s is not a `prob` rule' % (args.domain, number))
+            name = 'line %s' % number
+            w = weight(lines, i)
+            k = LADDER.index(w)
+            for j in (k - 1, k + 1):
+                if not 0 <= j < len(LADDER):
+                    continue
+                candidate = with_weight(lines, i, LADDER[j])
+                open(args.domain, 'w').write('\n'.join(candidate))
+                value, parts = score(args)
+                print('%s %g -> %g: J %.4f (%+.4f) %s' % (name, w, LADDER[j], value, value - best,
+                                                         ' '.join('%.3f' % x for x in parts)), flush=True)
+                if value >= best + args.min_gain:
+                    best, lines = value, candidate
+                    print('  kept', flush=True)
+                    break
+            open(args.domain, 'w').write('\n'.join(lines))
+        open(args.out, 'w').write('\n'.join(lines))
+        print('best: J %.4f, written to %s' % (best, args.out))
+    finally:
+        open(args.domain, 'w').write(original)
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
