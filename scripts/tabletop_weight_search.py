@@ -52,8 +52,10 @@ def table_rows(out):
 
 
 def score(args):
-    subprocess.run(['cmake', '--build', args.build, '-j2', '--target', 'tabletop_family_eval'], check=True,
-                   stdout=subprocess.DEVNULL)
+    built = subprocess.run(['cmake', '--build', args.build, '-j2', '--target', 'tabletop_family_eval'],
+                           stdout=subprocess.DEVNULL)
+    if built.returncode:
+        raise RuntimeError('building tabletop_family_eval in %s failed' % args.build)
     binary = os.path.join(args.build, 'bin', 'tabletop_family_eval')
     runs = [[binary, '--generator', 'indep', '--scenes', str(args.indep_scenes), '--seed', str(args.indep_seed)],
             [binary, '--scenes', str(args.project_scenes), '--seed', str(args.project_seed)]]
@@ -83,13 +85,18 @@ def main():
 
     original = open(args.domain).read()
     lines = original.split('\n')
+    steps = []
+    for number in args.lines.split(','):
+        i = int(number) - 1 if number.isdigit() else -1
+        if not 0 <= i < len(lines) or not lines[i].startswith('prob '):
+            sys.exit('%s:%s: not a `prob` rule' % (args.domain, number))
+        if weight(lines, i) not in LADDER:
+            sys.exit('%s:%s: weight %g is not on the ladder %s' % (args.domain, number, weight(lines, i), LADDER))
+        steps.append((number, i))
     try:
         best, parts = score(args)
         print('start: J %.4f %s' % (best, ' '.join('%.3f' % x for x in parts)), flush=True)
-        for number in args.lines.split(','):
-            i = int(number) - 1
-            if not lines[i].startswith('prob '):
-                raise ValueError('%s:%s is not a `prob` rule' % (args.domain, number))
+        for number, i in steps:
             name = 'line %s' % number
             w = weight(lines, i)
             k = LADDER.index(w)
@@ -108,6 +115,8 @@ def main():
             open(args.domain, 'w').write('\n'.join(lines))
         open(args.out, 'w').write('\n'.join(lines))
         print('best: J %.4f, written to %s' % (best, args.out))
+    except RuntimeError as e:
+        sys.exit('tabletop_weight_search: %s' % e)
     finally:
         open(args.domain, 'w').write(original)
     return 0
