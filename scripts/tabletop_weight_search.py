@@ -4,7 +4,8 @@
 Each step sets one rule's `prob` to its neighbour on a ladder, rebuilds tabletop_family_eval
 (the weights are compiled in), scores training scenes of both generators and keeps the step
 when the objective rises by at least --min-gain. The objective is the sum of four pooled F1:
-false and hidden estimates on the independent generator and on the project's generator.
+false and hidden estimates on the independent generator and on the project's generator, each
+pooled over the families from the rows' n, P and R (which the table rounds to two decimals).
 
 The domain file is edited in place and restored at the end (also on an error or Ctrl-C); the
 best file found is written to --out. Score the result on seeds the search did not see before
