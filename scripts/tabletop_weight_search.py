@@ -5,7 +5,7 @@ Each step sets one rule's `prob` to its neighbour on a ladder, rebuilds tabletop
 (the weights are compiled in), scores training scenes of both generators and keeps the step
 when the objective rises by at least --min-gain. The objective is the sum of four pooled F1:
 false and hidden estimates on the independent generator and on the project's generator, each
-pooled over the families from the rows' n, P and R (which the table rounds to two decimals).
+pooled over the families (the exact counts of the eval's `pooled over` line).
 
 The domain file is edited in place and restored at the end (also on an error or Ctrl-C); the
 best file found is written to --out. Score the result on seeds the search did not see before
@@ -34,22 +34,17 @@ def with_weight(lines, i, w):
     return out
 
 
-def pooled_f1(rows, n_col, prf_col):
-    tp = fp = fn = 0.0
-    for r in rows:
-        n = int(r[n_col])
-        p, rec, _ = (float(x) for x in r[prf_col].split())
-        t = rec * n
-        tp, fn = tp + t, fn + n - t
-        fp += t / p - t if p > 0 else 0.0
-    prec = tp / (tp + fp) if tp + fp else 0.0
-    rec = tp / (tp + fn) if tp + fn else 0.0
-    return 2 * prec * rec / (prec + rec) if prec + rec else 0.0
-
-
-def table_rows(out):
-    return [[c.strip() for c in l.strip().strip('|').split('|')] for l in out.split('\n')
-            if l.startswith('| ') and not l.startswith('| family')]
+def pooled_f1s(out):
+    """False and hidden F1 from tabletop_family_eval's `pooled over N families:` line."""
+    line = next((l for l in out.split('\n') if l.startswith('pooled over ')), None)
+    if line is None:
+        raise RuntimeError('tabletop_family_eval printed no pooled line')
+    f1 = {}
+    for part in line.split(':', 1)[1].split('|'):
+        m = re.match(r'\s*(\w+) P R F1 [0-9.]+ [0-9.]+ ([0-9.]+)', part)
+        if m:
+            f1[m.group(1)] = float(m.group(2))
+    return [f1['false'], f1['hidden']]
 
 
 def score(args):
@@ -66,8 +61,7 @@ def score(args):
         out, _ = p.communicate()
         if p.returncode:
             raise RuntimeError('tabletop_family_eval failed')
-        rows = table_rows(out)
-        parts += [pooled_f1(rows, 3, 4), pooled_f1(rows, 5, 6)]
+        parts += pooled_f1s(out)
     return sum(parts), parts
 
 

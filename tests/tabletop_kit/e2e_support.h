@@ -48,6 +48,12 @@ struct Counts {
     const double p = precision(), r = recall();
     return p + r == 0.0 ? 0.0 : 2.0 * p * r / (p + r);
   }
+  Counts& operator+=(const Counts& o) {
+    tp += o.tp;
+    fp += o.fp;
+    fn += o.fn;
+    return *this;
+  }
   std::string row(const std::string& name) const {
     return fmt::format("| {:<14} | {:>4} | {:>4} | {:>4} | {:>9.3f} | {:>6.3f} | {:>6.3f} |", name, tp, fp, fn,
                        precision(), recall(), f1());
@@ -60,6 +66,17 @@ struct Score {
   long objects = 0;
   long positives = 0;           // objects truly false or hidden
   long positive_undecided = 0;  // of those, undecided on the predicate that is true
+  Score& operator+=(const Score& o) {
+    is_false += o.is_false;
+    is_hidden += o.is_hidden;
+    support += o.support;
+    contact += o.contact;
+    undecided += o.undecided;
+    objects += o.objects;
+    positives += o.positives;
+    positive_undecided += o.positive_undecided;
+    return *this;
+  }
 };
 
 // A truth id as the kit's scene stores it: numeric ids as their JSON text.

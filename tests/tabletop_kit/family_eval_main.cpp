@@ -10,7 +10,8 @@
 // pose-estimate term of the likelihood (KitOptions::pose_sigma_t / _r, overriding the domain's keypoints.gaussian estimate_sigma_t / _r; 0 turns it off).
 // --write-db writes training worlds for `ksmc learn` (training_db, from either generator) instead of scoring.
 // Prints one row per family: false / hidden / support / contact P R F1 and the undecided
-// share of the true positives (docs/tabletop_families.md).
+// share of the true positives (docs/tabletop_families.md), then the same pooled over the
+// families, exact (pooled_line).
 #include <charconv>
 #include <chrono>
 #include <cstdio>
@@ -112,7 +113,7 @@ int main(int argc, char** argv) {
     }
     std::cout << fmt::format("generator {}, binding {}, seed {}, {} scenes per family, {} iterations\n", generator,
                              binding_name, run.seed, run.scenes, run.iterations)
-              << family_table(rows);
+              << family_table(rows) << pooled_line(rows);
     if (kinds) std::cout << false_kind_lines(rows);
     return 0;
   } catch (const std::exception& e) {

@@ -5,6 +5,7 @@
 
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "stdlib/tabletop/scene_io.h"
@@ -58,6 +59,22 @@ inline std::string family_table(const std::vector<FamilyScore>& rows) {
                        s.contact.tp + s.contact.fn, prf(s.contact), r.undecided_percent());
   }
   return out;
+}
+
+// The families' counts summed: the pooled figures, exact (the table's rows round to two
+// decimals). One line, read by scripts/tabletop_weight_search.py:
+//   pooled over 9 families: false P R F1 0.943 0.781 0.854 (tp 232 fp 14 fn 65) | hidden ... | undecided 3.7 %
+inline std::string pooled_line(const std::vector<FamilyScore>& rows) {
+  FamilyScore all;
+  for (const auto& r : rows) all.score += r.score;
+  auto part = [](std::string_view name, const Counts& c) {
+    return fmt::format("{} P R F1 {:.3f} {:.3f} {:.3f} (tp {} fp {} fn {})", name, c.precision(), c.recall(), c.f1(), c.tp,
+                       c.fp, c.fn);
+  };
+  const Score& s = all.score;
+  return fmt::format("pooled over {} families: {} | {} | {} | {} | undecided {:.1f} % of {} positives\n", rows.size(),
+                     part("false", s.is_false), part("hidden", s.is_hidden), part("support", s.support),
+                     part("contact", s.contact), all.undecided_percent(), s.positives);
 }
 
 // One line per family: recall of each false-estimate kind (found / generated).
