@@ -143,8 +143,11 @@ int usage_error(const CliStreams& io, const DomainSpec& spec, const std::string&
   return kExitUsage;
 }
 
+// A message that already names its place ("map.pgm: error: ...", "scene.json:3: error: ...")
+// is printed as it is, like a compiler's; any other gets the program's name.
 int failure(const CliStreams& io, const DomainSpec& spec, const std::string& msg) {
-  io.err << spec.name << ": error: " << msg << '\n';
+  if (msg.find(": error: ") != std::string::npos) io.err << msg << '\n';
+  else io.err << spec.name << ": error: " << msg << '\n';
   return kExitError;
 }
 

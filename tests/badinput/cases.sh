@@ -1,5 +1,6 @@
 # The cases of the bad-input suite (sourced by run.sh; runs in a scratch folder).
 # expect NAME EXIT "MESSAGE FRAGMENT" none|intact|complete|- OUTPUT_DIR -- COMMAND...
+# (a fragment "^text": the message starts with text)
 
 # Every file of a complete output folder is listed in its summary.json with its SHA-256.
 manifest_complete() {
@@ -180,6 +181,9 @@ for i in range(100000): print('%.4f %.4f %.4f' % (random.uniform(-0.03, 0.03), r
     expect "map YAML resolution: 1e-300 message" 1 "outside the plausible range" none m1 -- "$indoor" tiny.yaml --out m1
     expect "map YAML resolution: 1e300" 1 "huge.yaml:2: " none m1 -- "$indoor" huge.yaml --out m1
     expect "--resolution 1e300" 1 "outside the plausible range" none m1 -- "$indoor" sim_office.pgm --resolution 1e300 --out m1
+    # A message that names its file is printed as it is: no "indoor: error: map.pgm: error:".
+    { printf 'P5\n10 10\n255\n'; head -c 30 sim_office.pgm; } > trunc.pgm
+    expect "indoor: truncated PGM" 1 "^trunc.pgm: error: PGM (P5) pixel data is truncated: header says 10x10 = 100 bytes, file has 30" none m1 -- "$indoor" trunc.pgm --out m1
     cp "$src/examples/indoor/sim_office.yaml" office.yaml
     expect "indoor SIGTERM mid-run" 143 "interrupted by SIGTERM" complete iterm -- timeout --foreground --preserve-status -s TERM 5 "$indoor" office.yaml --iterations 100000000000 --out iterm
     [ -d iterm ] && manifest_complete iterm "indoor: every file listed"

@@ -35,7 +35,10 @@ expect() {
   end=$(date +%s.%N)
   local ok=1 why=""
   [ "$rc" -eq "$code" ] || { ok=0; why="exit $rc, expected $code"; }
-  if [ -n "$fragment" ] && [[ "$out" != *"$fragment"* ]]; then ok=0; why="$why; message lacks '$fragment'"; fi
+  # A fragment starting with ^ must start the message's first line.
+  if [[ "$fragment" == ^* ]]; then
+    [[ "$out" == "${fragment#^}"* ]] || { ok=0; why="$why; message does not start with '${fragment#^}'"; }
+  elif [ -n "$fragment" ] && [[ "$out" != *"$fragment"* ]]; then ok=0; why="$why; message lacks '$fragment'"; fi
   case "$check" in
     none) [ ! -e "$dir" ] || { ok=0; why="$why; $dir was created"; } ;;
     intact) [ "$(digest "$dir")" = "$before" ] || { ok=0; why="$why; $dir changed"; } ;;
