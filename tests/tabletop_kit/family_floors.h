@@ -32,7 +32,7 @@ std::vector<FamilyScore> check_floors(std::span<const Floor> floors, Evaluate ev
     CHECK(s.support.f1() >= f.support_f1);
     CHECK(rows.back().undecided_percent() <= f.undecided_pct);
   }
-  std::cout << family_table(rows) << false_kind_lines(rows);
+  std::cout << family_table(rows) << pooled_line(rows) << false_kind_lines(rows);
   return rows;
 }
 

@@ -25,6 +25,21 @@ ti::IndepScene scene_of(const char* name, std::uint64_t i) {
 
 }  // namespace
 
+TEST_CASE("pooled line: the families' exact counts summed") {
+  FamilyScore a, b;
+  a.score.is_false = {3, 1, 2};  // tp fp fn
+  b.score.is_false = {5, 0, 1};
+  a.score.is_hidden = {2, 0, 0};
+  a.score.positives = 7;
+  b.score.positives = 3;
+  b.score.positive_undecided = 1;
+  const std::string line = pooled_line({a, b});
+  // false: tp 8 fp 1 fn 3 -> P 8/9, R 8/11, F1 16/20 = 0.8 (the rows' rounded P and R would not give it)
+  CHECK_THAT(line, Catch::StartsWith("pooled over 2 families: false P R F1 0.889 0.727 0.800 (tp 8 fp 1 fn 3) | "
+                                     "hidden P R F1 1.000 1.000 1.000 (tp 2 fp 0 fn 0) | "));
+  CHECK_THAT(line, Catch::EndsWith("| undecided 10.0 % of 10 positives\n"));
+}
+
 TEST_CASE("indep: known names, deterministic scenes, disjoint seeds") {
   REQUIRE(ti::families().size() == 9);
   CHECK_THROWS_WITH(ti::family("nope"), Catch::Contains("unknown family 'nope'") && Catch::Contains("indep_leaning"));
