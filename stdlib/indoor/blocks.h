@@ -53,10 +53,11 @@ enum class Move { birth, death, split, merge, shrink, dilate, allocate, dealloca
 // ---- extractors ------------------------------------------------------------------------------
 namespace geom {
 // Table 3.6: hall-like when the longer side exceeds big_size (m); otherwise corridor-like when
-// longer / shorter exceeds big_ratio, else room-like. Exactly one of the three holds.
-bool room_like(const Scene& s, const Unit& u, double big_size, double big_ratio);
-bool corridor_like(const Scene& s, const Unit& u, double big_size, double big_ratio);
-bool hall_like(const Scene& s, const Unit& u, double big_size, double big_ratio);
+// longer / shorter exceeds big_ratio, else room-like; an elongated unit at most corridor_width
+// (m) wide is corridor-like at any length (classify_unit). Exactly one of the three holds.
+bool room_like(const Scene& s, const Unit& u, double big_size, double big_ratio, double corridor_width);
+bool corridor_like(const Scene& s, const Unit& u, double big_size, double big_ratio, double corridor_width);
+bool hall_like(const Scene& s, const Unit& u, double big_size, double big_ratio, double corridor_width);
 // Two different units whose walls, dilated by `dilate` cells, meet (connecting_walls); symmetric.
 bool adjacent(const Scene& s, const Unit& a, const Unit& b, double dilate);
 // At least `min_doors` of `doors` are attached to the unit.

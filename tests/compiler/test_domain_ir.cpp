@@ -59,7 +59,7 @@ TEST_CASE("domain IR: calls bound in signature order with defaults and base unit
   const lower::CallIr& c = ir.extracts[0].call;
   CHECK(c.block == "geom.room_like");
   CHECK(c.per_binding);
-  REQUIRE(c.args.size() == 3);
+  REQUIRE(c.args.size() == 4);
   CHECK(c.args[0].value.kind == lower::ValueIr::Kind::Element);
   CHECK(c.args[0].value.type == "rect");
   CHECK(c.args[0].value.slot == 0);
@@ -67,6 +67,9 @@ TEST_CASE("domain IR: calls bound in signature order with defaults and base unit
   CHECK(c.args[1].value.real == Approx(8.0));
   CHECK_FALSE(c.args[1].defaulted);
   CHECK(c.args[2].value.real == 2.5);
+  CHECK(c.args[3].param == "corridor_width");
+  CHECK(c.args[3].value.real == 0.0);
+  CHECK(c.args[3].defaulted);
   const lower::CallIr& m = ir.extracts[1].call;
   CHECK(m.args[1].value.kind == lower::ValueIr::Kind::Collection);
   CHECK(m.args[2].value.kind == lower::ValueIr::Kind::Int);
@@ -105,7 +108,7 @@ TEST_CASE("emitted binding: direct block calls, pair directions share sources") 
   REQUIRE(l.r.ok);
   REQUIRE(l.r.files.size() == 5);
   const std::string& src = l.r.files[3].text;
-  CHECK(src.find("return blk::geom::room_like(s, s.rect(c[0]), 8.0, 2.5);") != std::string::npos);
+  CHECK(src.find("return blk::geom::room_like(s, s.rect(c[0]), 8.0, 2.5, 0.0);") != std::string::npos);
   CHECK(src.find("return blk::geom::multi_door(s, s.rect(c[0]), s.segments(), 2);") != std::string::npos);
   CHECK(src.find("{{true, kPred_SaLe, {0, 1}, dom::Cmp::ge, 0.25, false}}, &prior_SaLe_gaussian") != std::string::npos);
   CHECK(src.find("b.kernels.push_back({\"GROW\", \"SHRINK\", blk::Move::birth, {blk::detect::wbu(1.5, 200), blk::detect::fsu(10, 100)}") !=

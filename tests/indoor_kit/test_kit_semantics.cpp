@@ -38,19 +38,27 @@ World world_of(const std::vector<OrientedRect>& rects, const std::vector<std::pa
 }  // namespace
 
 TEST_CASE("Table 3.6 blocks: size and aspect ratio give exactly one of room, corridor or hall", "[indoor_kit]") {
-  // 4 x 3 m, 9.5 x 2 m, 14 x 8 m, 20 x 2 m (big wins over ratio), ratio exactly 3.
-  const World w = world_of({{0, 0, 80, 60, 0}, {0, 0, 190, 40, 0}, {0, 0, 280, 160, 0}, {0, 0, 400, 40, 0}, {0, 0, 60, 20, 0.3}});
+  // 4 x 3 m, 9.5 x 2 m, 14 x 8 m, 20 x 2 m, ratio exactly 3, 20 x 4.5 m, 30 x 3.9 m.
+  const World w = world_of({{0, 0, 80, 60, 0}, {0, 0, 190, 40, 0}, {0, 0, 280, 160, 0}, {0, 0, 400, 40, 0},
+                            {0, 0, 60, 20, 0.3}, {0, 0, 400, 90, 0}, {0, 0, 600, 78, 0}});
   const blk::Scene s(w, 0.05);
-  const int want[] = {0, 1, 2, 2, 0};
-  for (std::int32_t i = 0; i < 5; ++i) {
-    const bool r = blk::geom::room_like(s, s.rect(i), 10.0, 3.0);
-    const bool c = blk::geom::corridor_like(s, s.rect(i), 10.0, 3.0);
-    const bool h = blk::geom::hall_like(s, s.rect(i), 10.0, 3.0);
-    INFO("unit " << i);
-    CHECK(r + c + h == 1);
-    CHECK((want[i] == 0 ? r : want[i] == 1 ? c : h));
+  // Table 3.6 as printed (corridor_width 0): big size wins over the ratio.
+  const int printed[] = {0, 1, 2, 2, 0, 2, 2};
+  // corridor_width 4 m: a unit of big ratio at most 4 m wide is a corridor at any length; the
+  // 4.5 m wide one stays a hall.
+  const int narrow[] = {0, 1, 2, 1, 0, 2, 1};
+  for (const double width : {0.0, 4.0}) {
+    const int* want = width > 0.0 ? narrow : printed;
+    for (std::int32_t i = 0; i < 7; ++i) {
+      const bool r = blk::geom::room_like(s, s.rect(i), 10.0, 3.0, width);
+      const bool c = blk::geom::corridor_like(s, s.rect(i), 10.0, 3.0, width);
+      const bool h = blk::geom::hall_like(s, s.rect(i), 10.0, 3.0, width);
+      INFO("unit " << i << ", corridor_width " << width);
+      CHECK(r + c + h == 1);
+      CHECK((want[i] == 0 ? r : want[i] == 1 ? c : h));
+    }
   }
-  CHECK(blk::geom::hall_like(s, s.rect(0), 3.5, 3.0));  // 4 m > 3.5 m
+  CHECK(blk::geom::hall_like(s, s.rect(0), 3.5, 3.0, 4.0));  // 4 m > 3.5 m, ratio 1.33: not elongated
 }
 
 TEST_CASE("connecting walls, adjacency and the wall-length difference", "[indoor_kit]") {

@@ -32,14 +32,14 @@ bool any_sample(const OrientedRect& r, int nu, int nv, F&& f) {
 
 namespace geom {
 
-bool room_like(const Scene& s, const Unit& u, double big_size, double big_ratio) {
-  return classify_unit(u.rect, s.resolution(), big_size, big_ratio) == GeomClass::RoomLike;
+bool room_like(const Scene& s, const Unit& u, double big_size, double big_ratio, double corridor_width) {
+  return classify_unit(u.rect, s.resolution(), big_size, big_ratio, corridor_width) == GeomClass::RoomLike;
 }
-bool corridor_like(const Scene& s, const Unit& u, double big_size, double big_ratio) {
-  return classify_unit(u.rect, s.resolution(), big_size, big_ratio) == GeomClass::CorridorLike;
+bool corridor_like(const Scene& s, const Unit& u, double big_size, double big_ratio, double corridor_width) {
+  return classify_unit(u.rect, s.resolution(), big_size, big_ratio, corridor_width) == GeomClass::CorridorLike;
 }
-bool hall_like(const Scene& s, const Unit& u, double big_size, double big_ratio) {
-  return classify_unit(u.rect, s.resolution(), big_size, big_ratio) == GeomClass::HallLike;
+bool hall_like(const Scene& s, const Unit& u, double big_size, double big_ratio, double corridor_width) {
+  return classify_unit(u.rect, s.resolution(), big_size, big_ratio, corridor_width) == GeomClass::HallLike;
 }
 
 bool adjacent(const Scene&, const Unit& a, const Unit& b, double dilate) {

@@ -6,11 +6,14 @@
 
 namespace ksmc::stdlib::indoor::blocks {
 
-GeomClass classify_unit(const OrientedRect& r, double resolution, double big_size_m, double big_ratio) {
+GeomClass classify_unit(const OrientedRect& r, double resolution, double big_size_m, double big_ratio,
+                        double corridor_width_m) {
   const double lo = std::min(std::abs(r.w), std::abs(r.h)) * resolution;
   const double hi = std::max(std::abs(r.w), std::abs(r.h)) * resolution;
+  const bool elongated = lo <= 0.0 || hi / lo > big_ratio;
+  if (elongated && lo <= corridor_width_m) return GeomClass::CorridorLike;  // long and narrow, any length
   if (hi > big_size_m) return GeomClass::HallLike;
-  if (lo <= 0.0 || hi / lo > big_ratio) return GeomClass::CorridorLike;
+  if (elongated) return GeomClass::CorridorLike;
   return GeomClass::RoomLike;
 }
 

@@ -11,8 +11,11 @@ namespace ksmc::stdlib::indoor::blocks {
 enum class GeomClass : unsigned char { RoomLike, CorridorLike, HallLike };
 
 // Table 3.6: hall-like when the longer side exceeds big_size_m; otherwise corridor-like when
-// longer / shorter exceeds big_ratio, else room-like. `resolution` in m per cell.
-GeomClass classify_unit(const OrientedRect& r, double resolution, double big_size_m, double big_ratio);
+// longer / shorter exceeds big_ratio, else room-like. A unit whose longer / shorter exceeds
+// big_ratio and whose shorter side is at most corridor_width_m is corridor-like at any length
+// (0: the table as printed, where a long corridor reads as hall-like). `resolution` in m per cell.
+GeomClass classify_unit(const OrientedRect& r, double resolution, double big_size_m, double big_ratio,
+                        double corridor_width_m);
 
 // The connecting walls of two units: the pair of nearly parallel edges (within 10 degrees)
 // closest across and overlapping along by more than `dilate_cells`, both within

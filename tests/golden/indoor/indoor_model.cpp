@@ -15,17 +15,17 @@ namespace blk = ksmc::stdlib::indoor::blocks;
 namespace dom = ksmc::runtime::domain;
 using Scene = blk::Scene;
 
-// extract RoLi(u) = geom.room_like(unit[u], big_size = 10 m, big_ratio = 3.0);
+// extract RoLi(u) = geom.room_like(unit[u], big_size = 10 m, big_ratio = 3.0, corridor_width = 4 m);
 bool extract_RoLi(const Scene& s, const std::int32_t* c) {
-  return blk::geom::room_like(s, s.rect(c[0]), 10.0, 3.0);
+  return blk::geom::room_like(s, s.rect(c[0]), 10.0, 3.0, 4.0);
 }
-// extract CoLi(u) = geom.corridor_like(unit[u], big_size = 10 m, big_ratio = 3.0);
+// extract CoLi(u) = geom.corridor_like(unit[u], big_size = 10 m, big_ratio = 3.0, corridor_width = 4 m);
 bool extract_CoLi(const Scene& s, const std::int32_t* c) {
-  return blk::geom::corridor_like(s, s.rect(c[0]), 10.0, 3.0);
+  return blk::geom::corridor_like(s, s.rect(c[0]), 10.0, 3.0, 4.0);
 }
-// extract HaLi(u) = geom.hall_like(unit[u], big_size = 10 m, big_ratio = 3.0);
+// extract HaLi(u) = geom.hall_like(unit[u], big_size = 10 m, big_ratio = 3.0, corridor_width = 4 m);
 bool extract_HaLi(const Scene& s, const std::int32_t* c) {
-  return blk::geom::hall_like(s, s.rect(c[0]), 10.0, 3.0);
+  return blk::geom::hall_like(s, s.rect(c[0]), 10.0, 3.0, 4.0);
 }
 // extract Adj(a, b) = geom.adjacent(unit[a], unit[b], dilate = 2 cells);
 bool extract_Adj(const Scene& s, const std::int32_t* c) {
@@ -62,9 +62,9 @@ blk::Binding make_binding() {
   b.source = "domains/indoor.ksm";
   b.mln = {&program, &make_domain, &ground};
   b.constant_type = kType_unit;
-  b.extractors.push_back({kPred_RoLi, &extract_RoLi, "extract RoLi(u) = geom.room_like(unit[u], big_size = 10 m, big_ratio = 3.0);"});
-  b.extractors.push_back({kPred_CoLi, &extract_CoLi, "extract CoLi(u) = geom.corridor_like(unit[u], big_size = 10 m, big_ratio = 3.0);"});
-  b.extractors.push_back({kPred_HaLi, &extract_HaLi, "extract HaLi(u) = geom.hall_like(unit[u], big_size = 10 m, big_ratio = 3.0);"});
+  b.extractors.push_back({kPred_RoLi, &extract_RoLi, "extract RoLi(u) = geom.room_like(unit[u], big_size = 10 m, big_ratio = 3.0, corridor_width = 4 m);"});
+  b.extractors.push_back({kPred_CoLi, &extract_CoLi, "extract CoLi(u) = geom.corridor_like(unit[u], big_size = 10 m, big_ratio = 3.0, corridor_width = 4 m);"});
+  b.extractors.push_back({kPred_HaLi, &extract_HaLi, "extract HaLi(u) = geom.hall_like(unit[u], big_size = 10 m, big_ratio = 3.0, corridor_width = 4 m);"});
   b.extractors.push_back({kPred_Adj, &extract_Adj, "extract Adj(a, b) = geom.adjacent(unit[a], unit[b], dilate = 2 cells);"});
   b.extractors.push_back({kPred_MulDoor, &extract_MulDoor, "extract MulDoor(u) = geom.multi_door(unit[u], door, min_doors = 2);"});
   b.extractors.push_back({kPred_Thin, &extract_Thin, "extract Thin(u) = geom.thin(unit[u], min_width = 0.6 m);"});
