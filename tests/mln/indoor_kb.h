@@ -16,7 +16,9 @@ struct IndoorKb {
   std::int32_t roli = 0, coli = 0, hali = 0, muldoor = 0, adj = 0, thin = 0, blocked = 0, hollow = 0, open_join = 0;
   std::int32_t room = 0, corr = 0, hall = 0, other = 0, sale = 0;
 
-  IndoorKb() {
+  // only_seed_rules: the rules of DESIGN.md section 6 and the defect rules, without the two
+  // that keep SaLe off for pairs that are not two rooms (test_indoor's MC-SAT check).
+  explicit IndoorKb(bool only_seed_rules = false) {
     using namespace runtime::mln;
     unit = program.add_type("unit");
     auto pred = [&](const char* name, int arity, bool query) {
@@ -74,6 +76,11 @@ struct IndoorKb {
     rule("i9", 18, 0.7, "MulDoor(u) => !Room(u)", 1, {{muldoor, true, {0}}, {room, true, {0}}});
     rule("i10", 19, 0.9, "Room(a) ^ Room(b) ^ Adj(a, b) => SaLe(a, b)", 2,
          {{room, true, {0}}, {room, true, {1}}, {adj, true, {0, 1}}, {sale, false, {0, 1}}});
+    // Only two rooms share a wall length (issue 11): SaLe off for every other adjacent pair.
+    if (!only_seed_rules) rule("sale_none", 29, 0.9, "Adj(a, b) ^ !Room(a) ^ !Room(b) => !SaLe(a, b)", 2,
+         {{adj, true, {0, 1}}, {room, false, {0}}, {room, false, {1}}, {sale, true, {0, 1}}});
+    if (!only_seed_rules) rule("sale_one", 30, std::exp(4.394449) / (1.0 + std::exp(4.394449)), "Adj(a, b) ^ Room(a) ^ !Room(b) => !SaLe(a, b)", 2,
+         {{adj, true, {0, 1}}, {room, true, {0}}, {room, false, {1}}, {sale, true, {0, 1}}});
     // The knowledge against topological defects (issue 11): evidence only.
     rule("no_sliver", 31, 1.0, "!Thin(u)", 1, {{thin, true, {0}}});
     rule("not_wall", 33, 1.0, "!Blocked(u)", 1, {{blocked, true, {0}}});

@@ -14,6 +14,8 @@ constexpr double kW_hall_333a = 2.1972245773362196;  // prob 0.9
 constexpr double kW_corr_a5f2 = 1.3862943611198908;  // prob 0.8
 constexpr double kW_room_df3c = 0.8472978603872034;  // prob 0.7
 constexpr double kW_sale_3041 = 2.1972245773362196;  // prob 0.9
+constexpr double kW_sale_none = 2.1972245773362196;  // prob 0.9
+constexpr double kW_sale_one = 4.394449;  // w 4.394449
 constexpr double kW_one_space = 3;  // w 3.0
 
 }  // namespace
@@ -83,6 +85,16 @@ const mln::Program& program() {
                   {{"a", kType_unit, false}, {"b", kType_unit, false}},
                   {{kPred_Room, true, {mln::Term::var(0)}}, {kPred_Room, true, {mln::Term::var(1)}}, {kPred_Adj, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_SaLe, false, {mln::Term::var(0), mln::Term::var(1)}}},
                   kW_sale_3041, false, "Room(a) ^ Room(b) ^ Adj(a, b) => SaLe(a, b)", {"domains/indoor.ksm", 0}});
+    // sale_none: Adj(a, b) ^ !Room(a) ^ !Room(b) => !SaLe(a, b)
+    p.add_clause({"sale_none",
+                  {{"a", kType_unit, false}, {"b", kType_unit, false}},
+                  {{kPred_Adj, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_Room, false, {mln::Term::var(0)}}, {kPred_Room, false, {mln::Term::var(1)}}, {kPred_SaLe, true, {mln::Term::var(0), mln::Term::var(1)}}},
+                  kW_sale_none, false, "Adj(a, b) ^ !Room(a) ^ !Room(b) => !SaLe(a, b)", {"domains/indoor.ksm", 0}});
+    // sale_one: Adj(a, b) ^ Room(a) ^ !Room(b) => !SaLe(a, b)
+    p.add_clause({"sale_one",
+                  {{"a", kType_unit, false}, {"b", kType_unit, false}},
+                  {{kPred_Adj, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_Room, true, {mln::Term::var(0)}}, {kPred_Room, false, {mln::Term::var(1)}}, {kPred_SaLe, true, {mln::Term::var(0), mln::Term::var(1)}}},
+                  kW_sale_one, false, "Adj(a, b) ^ Room(a) ^ !Room(b) => !SaLe(a, b)", {"domains/indoor.ksm", 0}});
     // no_sliver: hard !Thin(u)
     p.add_clause({"no_sliver",
                   {{"u", kType_unit, false}},
@@ -245,6 +257,42 @@ void ground_sale_3041(mln::FactorContext& g, std::int32_t clause) {
   }
 }
 
+// sale_none: Adj(a, b) ^ !Room(a) ^ !Room(b) => !SaLe(a, b)
+void ground_sale_none(mln::FactorContext& g, std::int32_t clause) {
+  const std::int32_t n_unit = g.size(kType_unit);
+  for (std::int32_t v_a = 0; v_a < n_unit; ++v_a) {
+    for (std::int32_t v_b = 0; v_b < n_unit; ++v_b) {
+      if (!g.ev(kPred_Adj, std::int64_t{v_a} * n_unit + v_b)) {  // !Adj(a, b)
+        g.satisfied(kW_sale_none);
+        continue;
+      }
+      g.begin();
+      if (g.query(kPred_Room, v_a, false)) { g.satisfied(kW_sale_none); continue; }  // Room(a)
+      if (g.query(kPred_Room, v_b, false)) { g.satisfied(kW_sale_none); continue; }  // Room(b)
+      if (g.query(kPred_SaLe, std::int64_t{v_a} * n_unit + v_b, true)) { g.satisfied(kW_sale_none); continue; }  // !SaLe(a, b)
+      g.soft(kW_sale_none, clause);
+    }
+  }
+}
+
+// sale_one: Adj(a, b) ^ Room(a) ^ !Room(b) => !SaLe(a, b)
+void ground_sale_one(mln::FactorContext& g, std::int32_t clause) {
+  const std::int32_t n_unit = g.size(kType_unit);
+  for (std::int32_t v_a = 0; v_a < n_unit; ++v_a) {
+    for (std::int32_t v_b = 0; v_b < n_unit; ++v_b) {
+      if (!g.ev(kPred_Adj, std::int64_t{v_a} * n_unit + v_b)) {  // !Adj(a, b)
+        g.satisfied(kW_sale_one);
+        continue;
+      }
+      g.begin();
+      if (g.query(kPred_Room, v_a, true)) { g.satisfied(kW_sale_one); continue; }  // !Room(a)
+      if (g.query(kPred_Room, v_b, false)) { g.satisfied(kW_sale_one); continue; }  // Room(b)
+      if (g.query(kPred_SaLe, std::int64_t{v_a} * n_unit + v_b, true)) { g.satisfied(kW_sale_one); continue; }  // !SaLe(a, b)
+      g.soft(kW_sale_one, clause);
+    }
+  }
+}
+
 // no_sliver: hard !Thin(u)
 void ground_no_sliver(mln::FactorContext& g, std::int32_t clause) {
   const std::int32_t n_unit = g.size(kType_unit);
@@ -311,6 +359,8 @@ mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) 
   ground_corr_a5f2(g, clause++);
   ground_room_df3c(g, clause++);
   ground_sale_3041(g, clause++);
+  ground_sale_none(g, clause++);
+  ground_sale_one(g, clause++);
   ground_no_sliver(g, clause++);
   ground_not_wall(g, clause++);
   ground_no_hollow(g, clause++);

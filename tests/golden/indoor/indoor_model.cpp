@@ -51,7 +51,7 @@ bool extract_Hollow(const Scene& s, const std::int32_t* c) {
 bool extract_OpenJoin(const Scene& s, const std::int32_t* c) {
   return blk::geom::open_join(s, s.rect(c[0]), s.rect(c[1]), 2.0, 2.0);
 }
-// prior for a, b where P(SaLe(a, b)) > 0.6: gaussian(wall_length_diff(unit[a], unit[b]), sigma = 1 m);
+// prior for a, b where P(SaLe(a, b)) > 0.5: gaussian(wall_length_diff(unit[a], unit[b]), sigma = 1 m);
 double prior_SaLe_gaussian(const Scene& s, const std::int32_t* c) {
   return blk::gaussian(s, blk::wall_length_diff(s, s.rect(c[0]), s.rect(c[1])), 1.0);
 }
@@ -74,7 +74,7 @@ blk::Binding make_binding() {
   b.priors.push_back(blk::rect_penalty(1.0, 0.08726646259971647));
   b.priors.push_back(blk::overlap_penalty(1.0));
   b.priors.push_back(blk::mln());
-  b.conditional_priors.push_back({{kType_unit, kType_unit}, {{true, kPred_SaLe, {0, 1}, dom::Cmp::gt, 0.6, false}}, &prior_SaLe_gaussian, "prior for a, b where P(SaLe(a, b)) > 0.6: gaussian(wall_length_diff(unit[a], unit[b]), sigma = 1 m);"});
+  b.conditional_priors.push_back({{kType_unit, kType_unit}, {{true, kPred_SaLe, {0, 1}, dom::Cmp::gt, 0.5, false}}, &prior_SaLe_gaussian, "prior for a, b where P(SaLe(a, b)) > 0.5: gaussian(wall_length_diff(unit[a], unit[b]), sigma = 1 m);"});
   b.likelihood = blk::grid::occupancy({{0.8, 0.1, 0.1}, {0.1, 0.8, 0.1}, {0.1, 0.1, 0.8}}, {kPred_Room, kPred_Hall}, {{0.8, 0.1, 0.1}, {0.1, 0.8, 0.1}, {0.1, 0.1, 0.8}});
   b.kernels.push_back({"ADD", "REMOVE", blk::Move::birth, {blk::detect::wbu(1.5, 200), blk::detect::fsu(4000, 100), blk::detect::rpb(1.0)}, "kernel pair ADD / REMOVE = detect.wbu(min_size = 1.5 m), detect.fsu(after = 4000), detect.rpb(min_size = 1 m);"});
   b.kernels.push_back({"REMOVE", "ADD", blk::Move::death, b.kernels.back().sources, "kernel pair ADD / REMOVE = detect.wbu(min_size = 1.5 m), detect.fsu(after = 4000), detect.rpb(min_size = 1 m);"});
