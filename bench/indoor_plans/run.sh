@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # bench/indoor_plans/run.sh INDOOR_BIN MAKE_PLANS_BIN SCORE_BIN OUT [COUNT] [ITERS]
 # Generates COUNT synthetic plans (ksmc-make-plans, seed $SEED, default 1), runs the indoor
-# binary on each (--seed 1), scores world.json against the plan's truth with indoor_plan_score
+# binary on each (--seed $RUN_SEED, default 1), scores world.json against the plan's truth with indoor_plan_score
 # and prints a markdown row per plan and the mean row. Fails when any step fails.
 set -euo pipefail
 bin=$1; make_plans=$2; scorer=$3; out=$4; count=${5:-12}; iters=${6:-10000}
@@ -13,7 +13,7 @@ rows=()
 for (( k = 0; k < count; k++ )); do
   dir=$out/$k
   t0=$(date +%s.%N)
-  if ! "$bin" "$out/plans/plan_$k.yaml" --out "$dir" --seed 1 --iterations "$iters" --quiet > "$dir.log" 2>&1; then
+  if ! "$bin" "$out/plans/plan_$k.yaml" --out "$dir" --seed "${RUN_SEED:-1}" --iterations "$iters" --quiet > "$dir.log" 2>&1; then
     echo "indoor failed on plan_$k (see $dir.log)" >&2
     exit 1
   fi

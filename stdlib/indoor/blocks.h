@@ -161,9 +161,13 @@ struct WallShift {  // Gaussian wall shift (shrink / dilate)
 struct Interchange {  // shared-wall shift or junction swap of two units (interchange)
   bool operator==(const Interchange&) const = default;
 };
+struct UniformRect {  // a share of births drawn uniformly over all rectangles (birth / death)
+  double share = 0.05;
+  bool operator==(const UniformRect&) const = default;
+};
 }  // namespace move
 using Source = std::variant<detect::Wbu, detect::Fsu, detect::Rpb, detect::SplitLines, detect::Doors,
-                            partner::InverseDistance, move::WallShift, move::Interchange>;
+                            partner::InverseDistance, move::WallShift, move::Interchange, move::UniformRect>;
 
 namespace detect {
 Source wbu(double min_size, int max_units);
@@ -178,6 +182,7 @@ Source inverse_distance();
 namespace move {
 Source wall_shift(double sigma);
 Source interchange();
+Source uniform_rect(double share);
 }  // namespace move
 
 // ---- outputs ---------------------------------------------------------------------------------------

@@ -87,6 +87,10 @@ struct KernelParams {
   double door_angle = 10.0 * 3.14159265358979323846 / 180.0;  // door/wall angle tolerance
   double align_angle = 1e-6;         // units this close (mod 90 deg) share a frame, radians
   double coincide = 1e-6;            // coordinates this close coincide, cells
+  // ADD draws this share of its proposals uniformly over rectangles (move.uniform_rect): centre
+  // in the map, sides in [min_size, map diagonal] cells, orientation in [0, 90 deg). 0: the
+  // detectors' candidates only, so REMOVE cannot undo a unit no detector proposes.
+  double uniform_share = 0.0;
   OrientationBias orientation;       // dominant-orientation bias of ADD and SPLIT
 };
 

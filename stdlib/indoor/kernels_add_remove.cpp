@@ -1,6 +1,15 @@
 // ADD / REMOVE (seed §3.5.2): ADD draws a unit candidate by its weight omega_r (times the
 // dominant-orientation bias); REMOVE draws a member unit by b_r (eq. 3.21).
+// With KernelParams::uniform_share = s > 0 (move.uniform_rect), ADD is a mixture: with
+// probability s a rectangle drawn uniformly (centre in the map, each side in [min_size, D] with
+// D the map diagonal, orientation in [0, 90 deg): every rectangle once), otherwise a candidate.
+// Its probability is taken against counting measure on the candidates plus Lebesgue measure
+// (cells, radians) on the other rectangles, so a rectangle that is a candidate has
+// (1 - s) x its normalised weight and any other rectangle s x the uniform density. REMOVE of a
+// unit no detector proposes (one SPLIT, SHRINK / DILATE or INTERCHANGE made) then has a
+// reverse; with s = 0 that reverse is 0 and such a REMOVE is always rejected.
 #include <cmath>
+#include <numbers>
 
 #include "stdlib/indoor/kernel_common.h"
 
@@ -35,29 +44,77 @@ double log_candidate_mass(const Context& c, std::span<const CandidateUnit> cands
   return (total > 0.0 && mass > 0.0) ? std::log(mass / total) : kNegInf;
 }
 
+double map_diagonal(const Context& c) {
+  return std::hypot(static_cast<double>(c.ev.observed().rows), static_cast<double>(c.ev.observed().cols));
+}
+
+// log of the uniform component's density at r, or -inf outside its support.
+double log_uniform_density(const Context& c, const OrientedRect& r) {
+  const double rows = c.ev.observed().rows, cols = c.ev.observed().cols, d = map_diagonal(c);
+  const double span = d - c.p.min_size;
+  if (!(span > 0.0) || !(rows > 0.0) || !(cols > 0.0)) return kNegInf;
+  // The representation with theta in [0, 90 deg): a quarter turn swaps the sides.
+  const double quarter = 0.5 * std::numbers::pi;
+  const double turns = std::floor(r.theta / quarter);
+  if (!std::isfinite(turns)) return kNegInf;
+  const bool odd = std::fmod(std::abs(turns), 2.0) == 1.0;
+  const double w = odd ? r.h : r.w, h = odd ? r.w : r.h;
+  const auto inside = [](double x, double lo, double hi) { return x >= lo && x <= hi; };
+  if (!inside(r.cx, 0.0, cols) || !inside(r.cy, 0.0, rows) || !inside(w, c.p.min_size, d) || !inside(h, c.p.min_size, d))
+    return kNegInf;
+  return -std::log(quarter) - std::log(rows * cols) - 2.0 * std::log(span);
+}
+
+// log Q of ADD proposing r: the candidates' share on candidates, the uniform share elsewhere.
+double log_add_probability(const Context& c, std::span<const CandidateUnit> cands, const std::vector<double>& w,
+                           const OrientedRect& r) {
+  const double s = c.p.uniform_share;
+  const double on_candidates = log_candidate_mass(c, cands, w, r);
+  if (on_candidates > kNegInf) return s < 1.0 ? std::log1p(-s) + on_candidates : kNegInf;
+  return s > 0.0 ? std::log(s) + log_uniform_density(c, r) : kNegInf;
+}
+
+std::optional<OrientedRect> draw_uniform_rect(const Context& c, Rng& rng) {
+  const double d = map_diagonal(c);
+  if (!(d > c.p.min_size)) return std::nullopt;
+  std::uniform_real_distribution<double> x(0.0, c.ev.observed().cols), y(0.0, c.ev.observed().rows),
+      side(c.p.min_size, d), angle(0.0, 0.5 * std::numbers::pi);
+  OrientedRect r;
+  r.cx = x(rng);
+  r.cy = y(rng);
+  r.w = side(rng);
+  r.h = side(rng);
+  r.theta = angle(rng);
+  return r;
+}
+
 }  // namespace
 
 std::optional<Forward> propose_add(const Context& c, const World& w, Rng& rng) {
-  if (!c.src.units) return std::nullopt;
-  const auto cands = c.src.units(w);
+  const auto cands = c.src.units ? c.src.units(w) : std::span<const CandidateUnit>{};
   const auto weights = candidate_weights(c, cands);
-  const auto i = draw_weighted(weights, rng);
-  if (!i) return std::nullopt;
-  const Unit u = c.ev.make_unit(w.next_unit_id(), cands[*i].rect);
+  std::optional<OrientedRect> r;
+  if (c.p.uniform_share > 0.0 && std::uniform_real_distribution<double>(0.0, 1.0)(rng) < c.p.uniform_share) {
+    r = draw_uniform_rect(c, rng);
+  } else if (const auto i = draw_weighted(weights, rng)) {
+    r = cands[*i].rect;
+  }
+  if (!r) return std::nullopt;
+  const Unit u = c.ev.make_unit(w.next_unit_id(), *r);
   Forward f;
   f.move.kind = KernelKind::Add;
   f.move.units.push_back({u.id, std::nullopt, u});
-  f.log_q = log_candidate_mass(c, cands, weights, u.rect);
+  f.log_q = log_add_probability(c, cands, weights, u.rect);
+  if (!(f.log_q > kNegInf)) return std::nullopt;
   return f;
 }
 
 double log_q_add(const Context& c, const World& w, const Move& m) {
   const Shape s = shape_of(m);
-  if (!c.src.units || s.added.size() != 1 || !s.removed.empty() || !s.modified.empty() || !m.doors.empty())
-    return kNegInf;
+  if (s.added.size() != 1 || !s.removed.empty() || !s.modified.empty() || !m.doors.empty()) return kNegInf;
   if (w.find_unit(s.added[0]->id)) return kNegInf;
-  const auto cands = c.src.units(w);
-  return log_candidate_mass(c, cands, candidate_weights(c, cands), s.added[0]->after->rect);
+  const auto cands = c.src.units ? c.src.units(w) : std::span<const CandidateUnit>{};
+  return log_add_probability(c, cands, candidate_weights(c, cands), s.added[0]->after->rect);
 }
 
 std::optional<Forward> propose_remove(const Context& c, const World& w, Rng& rng) {

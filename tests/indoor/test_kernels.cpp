@@ -7,6 +7,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <numbers>
 
 #include "stdlib/indoor/kernels.h"
 #include "tests/indoor/kernel_fixture.h"
@@ -140,6 +141,62 @@ TEST_CASE("ADD / REMOVE round trip and proposal frequencies", "[indoor][kernels]
   CHECK(total == Approx(1.0).epsilon(1e-9));
   // The badly matching rotated unit is the likeliest to be removed (b_r, eq. 3.21).
   CHECK(prob[4] > prob[1]);
+}
+
+// move.uniform_rect: ADD draws a share of its proposals uniformly over rectangles, so REMOVE
+// has a reverse for a unit no detector proposes (here a shrunk room); without it that REMOVE
+// is always rejected.
+TEST_CASE("ADD's uniform share gives REMOVE a reverse for every unit", "[indoor][kernels]") {
+  KernelFixture fx;
+  KernelParams p0 = params();
+  KernelParams p1 = params();
+  p1.uniform_share = 0.05;
+  KernelSet detectors_only(fx.evidence, fx.sources(), p0), mixed(fx.evidence, fx.sources(), p1);
+  const World w = world_of({fx.evidence.make_unit(1, OrientedRect{30, 25, 36, 26, 0.0}), fx.unit(2, fx.rooms[3])});
+  const double diag = std::hypot(64.0, 120.0);
+  const double log_uniform = std::log(0.05) - std::log(0.5 * std::numbers::pi) - std::log(64.0 * 120.0) - 2.0 * std::log(diag - 3.0);
+  Move remove;
+  remove.kind = KernelKind::Remove;
+  remove.units.push_back({1, *w.find_unit(1), std::nullopt});
+  const World after = w.applied(remove);
+  const Move add = remove.inverse();
+  CHECK(detectors_only.log_q(KernelKind::Add, after, add) == -std::numeric_limits<double>::infinity());
+  CHECK(mixed.log_q(KernelKind::Add, after, add) == Approx(log_uniform).epsilon(1e-12));
+  // A quarter turn with the sides swapped, or a negative angle, is the same rectangle.
+  for (const OrientedRect r : {OrientedRect{30, 25, 26, 36, 0.5 * std::numbers::pi}, OrientedRect{30, 25, 26, 36, -0.5 * std::numbers::pi},
+                               OrientedRect{30, 25, 36, 26, std::numbers::pi}}) {
+    Move a = add;
+    a.units[0].after = fx.evidence.make_unit(a.units[0].id, r);
+    CHECK(mixed.log_q(KernelKind::Add, after, a) == Approx(log_uniform).epsilon(1e-12));
+  }
+  // Outside the support (centre off the map, a side under min_size): no density.
+  for (const OrientedRect r : {OrientedRect{-1, 25, 36, 26, 0.0}, OrientedRect{30, 25, 2, 26, 0.0}}) {
+    Move a = add;
+    a.units[0].after = fx.evidence.make_unit(a.units[0].id, r);
+    CHECK(mixed.log_q(KernelKind::Add, after, a) == -std::numeric_limits<double>::infinity());
+  }
+  // A candidate keeps its normalised weight, times 1 - share.
+  Move add_room = add;
+  add_room.units[0].after = fx.unit(add.units[0].id, fx.rooms[0]);
+  CHECK(mixed.log_q(KernelKind::Add, after, add_room) ==
+        Approx(std::log(0.95) + detectors_only.log_q(KernelKind::Add, after, add_room)).epsilon(1e-12));
+  // The sampled REMOVE carries that reverse; the uniform ADDs are scored as they are drawn.
+  const auto r = find(mixed, KernelKind::Remove, w, [](const Proposal& q) { return q.move.units[0].id == 1; });
+  REQUIRE(r);
+  CHECK(r->log_q_bwd == Approx(log_uniform).epsilon(1e-12));
+  check_inverse_scored(mixed, KernelKind::Add, after, [&](const Proposal& q) {
+    return detectors_only.log_q(KernelKind::Add, after, q.move) == -std::numeric_limits<double>::infinity();
+  });
+  // About 5 % of ADD proposals are uniform draws.
+  Rng rng(11);
+  int uniform = 0;
+  const int n = 20000;
+  for (int i = 0; i < n; ++i) {
+    const auto q = mixed.propose(KernelKind::Add, after, rng);
+    REQUIRE(q);
+    uniform += detectors_only.log_q(KernelKind::Add, after, q->move) == -std::numeric_limits<double>::infinity();
+  }
+  CHECK(static_cast<double>(uniform) / n == Approx(0.05).margin(0.005));
 }
 
 TEST_CASE("SPLIT / MERGE round trip", "[indoor][kernels]") {

@@ -140,5 +140,6 @@ Source detect::doors(double min_width, double max_width) { return Doors{min_widt
 Source partner::inverse_distance() { return InverseDistance{}; }
 Source move::wall_shift(double sigma) { return WallShift{sigma}; }
 Source move::interchange() { return Interchange{}; }
+Source move::uniform_rect(double share) { return UniformRect{share}; }
 
 }  // namespace ksmc::stdlib::indoor::blocks

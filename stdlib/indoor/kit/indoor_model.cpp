@@ -75,6 +75,9 @@ IndoorModel::IndoorModel(std::shared_ptr<const SharedInput> in) : in_(std::move(
     };
     KernelParams kp = in_->kernel;
     if (!p->cfg->wall_shift.empty()) kp.shift_sigma = p->cfg->wall_shift.front().sigma;
+    kp.uniform_share = 0.0;
+    for (const auto& u : p->cfg->uniform_rect) kp.uniform_share += u.share;
+    kp.uniform_share = std::min(kp.uniform_share, 1.0);
     p->ks = std::make_unique<KernelSet>(*in_->evidence, std::move(src), kp);
     pools_.push_back(std::move(pool));
   }

@@ -76,8 +76,8 @@ blk::Binding make_binding() {
   b.priors.push_back(blk::mln());
   b.conditional_priors.push_back({{kType_unit, kType_unit}, {{true, kPred_SaLe, {0, 1}, dom::Cmp::gt, 0.5, false}}, &prior_SaLe_gaussian, "prior for a, b where P(SaLe(a, b)) > 0.5: gaussian(wall_length_diff(unit[a], unit[b]), sigma = 1 m);"});
   b.likelihood = blk::grid::occupancy({{0.8, 0.1, 0.1}, {0.1, 0.8, 0.1}, {0.1, 0.1, 0.8}}, {kPred_Room, kPred_Hall}, {{0.8, 0.1, 0.1}, {0.1, 0.8, 0.1}, {0.1, 0.1, 0.8}});
-  b.kernels.push_back({"ADD", "REMOVE", blk::Move::birth, {blk::detect::wbu(1.5, 200), blk::detect::fsu(4000, 100), blk::detect::rpb(1.0)}, "kernel pair ADD / REMOVE = detect.wbu(min_size = 1.5 m), detect.fsu(after = 4000), detect.rpb(min_size = 1 m);"});
-  b.kernels.push_back({"REMOVE", "ADD", blk::Move::death, b.kernels.back().sources, "kernel pair ADD / REMOVE = detect.wbu(min_size = 1.5 m), detect.fsu(after = 4000), detect.rpb(min_size = 1 m);"});
+  b.kernels.push_back({"ADD", "REMOVE", blk::Move::birth, {blk::detect::wbu(1.5, 200), blk::detect::fsu(4000, 100), blk::detect::rpb(1.0), blk::move::uniform_rect(0.005)}, "kernel pair ADD / REMOVE = detect.wbu(min_size = 1.5 m), detect.fsu(after = 4000), detect.rpb(min_size = 1 m), move.uniform_rect(share = 0.005);"});
+  b.kernels.push_back({"REMOVE", "ADD", blk::Move::death, b.kernels.back().sources, "kernel pair ADD / REMOVE = detect.wbu(min_size = 1.5 m), detect.fsu(after = 4000), detect.rpb(min_size = 1 m), move.uniform_rect(share = 0.005);"});
   b.kernels.push_back({"SPLIT", "MERGE", blk::Move::split, {blk::detect::split_lines(20, 0.03490658503988659), blk::partner::inverse_distance()}, "kernel pair SPLIT / MERGE = detect.split_lines(min_votes = 20), partner.inverse_distance();"});
   b.kernels.push_back({"MERGE", "SPLIT", blk::Move::merge, b.kernels.back().sources, "kernel pair SPLIT / MERGE = detect.split_lines(min_votes = 20), partner.inverse_distance();"});
   b.kernels.push_back({"SHRINK", "DILATE", blk::Move::shrink, {blk::move::wall_shift(2.0)}, "kernel pair SHRINK / DILATE = move.wall_shift(sigma = 2 cells);"});
