@@ -165,9 +165,14 @@ struct UniformRect {  // a share of births drawn uniformly over all rectangles (
   double share = 0.05;
   bool operator==(const UniformRect&) const = default;
 };
+struct SeamDoors {  // doors on a split's cut allocated with it, deleted by the merge (split / merge)
+  double min_width = 0.6, max_width = 2.0;  // m
+  bool operator==(const SeamDoors&) const = default;
+};
 }  // namespace move
 using Source = std::variant<detect::Wbu, detect::Fsu, detect::Rpb, detect::SplitLines, detect::Doors,
-                            partner::InverseDistance, move::WallShift, move::Interchange, move::UniformRect>;
+                            partner::InverseDistance, move::WallShift, move::Interchange, move::UniformRect,
+                            move::SeamDoors>;
 
 namespace detect {
 Source wbu(double min_size, int max_units);
@@ -183,6 +188,7 @@ namespace move {
 Source wall_shift(double sigma);
 Source interchange();
 Source uniform_rect(double share);
+Source seam_doors(double min_width, double max_width);
 }  // namespace move
 
 // ---- outputs ---------------------------------------------------------------------------------------

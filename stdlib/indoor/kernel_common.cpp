@@ -104,4 +104,9 @@ double log_normal_pdf(double x, double sigma) {
   return -0.5 * (x / sigma) * (x / sigma) - std::log(sigma) - 0.5 * std::log(2.0 * kPi);
 }
 
+bool same_segment(const Context& c, Point2 a, Point2 b, Point2 p, Point2 q) {
+  const double e = c.p.coincide;
+  return (distance(a, p) <= e && distance(b, q) <= e) || (distance(a, q) <= e && distance(b, p) <= e);
+}
+
 }  // namespace ksmc::stdlib::indoor::kernels

@@ -69,4 +69,7 @@ Shape shape_of(const Move& m);
 
 double log_normal_pdf(double x, double sigma);
 
+// Segments a-b and p-q coincide (either direction) within KernelParams::coincide.
+bool same_segment(const Context& c, Point2 a, Point2 b, Point2 p, Point2 q);
+
 }  // namespace ksmc::stdlib::indoor::kernels

@@ -17,6 +17,8 @@
 // its doors stays on a wall of the changed rectangle (within door_snap). SPLIT and MERGE carry the
 // doors of the units they remove to the units they add (each door to the one added unit with a
 // wall under it; declined when that is not unique or the reverse would not carry it back).
+// With seam doors (KernelSources::seam_doors) SPLIT also allocates door candidates on its cut
+// and MERGE deletes the doors joining its two units.
 #pragma once
 
 #include <functional>
@@ -74,6 +76,9 @@ struct KernelSources {
   std::function<std::vector<CandidateLine>(const World&, const Unit& unit)> split_lines;
   // Door candidates for ALLOCATE given the current world.
   std::function<std::span<const CandidateDoor>(const World&)> doors;
+  // Door candidates on the shared wall of two rectangles (SPLIT allocates them on its cut,
+  // MERGE deletes the doors joining its two units); unset: neither does.
+  std::function<std::vector<CandidateDoor>(const OrientedRect& a, const OrientedRect& b)> seam_doors;
 };
 
 struct KernelParams {

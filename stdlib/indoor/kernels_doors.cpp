@@ -27,11 +27,6 @@ std::optional<std::pair<UnitId, UnitId>> attach(const Context& c, const World& w
   return std::make_pair(std::min(hits[0].id, hits[1].id), std::max(hits[0].id, hits[1].id));
 }
 
-bool same_segment(const Context& c, Point2 a, Point2 b, Point2 p, Point2 q) {
-  const double e = c.p.coincide;
-  return (distance(a, p) <= e && distance(b, q) <= e) || (distance(a, q) <= e && distance(b, p) <= e);
-}
-
 // True when segment a-b lies along door d's doorway: parallel within door_angle, its
 // midpoint within 2 door_snap of d's line (one wall's thickness), and the two extents along
 // that line overlapping. Door candidates are detected again at every refresh, a few tenths of a

@@ -7,6 +7,10 @@
 // to the one added unit with a wall under it). Before, a unit with a door could not be split
 // or merged, so a unit spanning several offices froze from the first door ALLOCATE gave it
 // (from iteration 4000 on: lab_c_scan kept one hall over six offices).
+// Seam doors (KernelSources::seam_doors, `move.seam_doors`): SPLIT also allocates each door
+// candidate found between its two halves with probability 1/2 (the distinct candidates, so a
+// set of doors has probability 2^-n), and MERGE deletes the doors joining its two units, which
+// it otherwise declines. So a corridor in pieces with a door between each two can be merged.
 #include <algorithm>
 #include <cmath>
 #include <array>
@@ -110,8 +114,10 @@ std::optional<UnitId> owner_of(const Context& c, const Door& d, std::span<const 
 // `from`. The last condition is the first one of the reverse move, so a move carries its doors
 // exactly when its reverse carries them back: the door changes are a function of the unit
 // changes, and the proposal densities stay those of the units.
+// With `delete_shared`, a door joining two units of `from` is deleted instead (MERGE with seam
+// doors).
 std::optional<std::vector<DoorChange>> carry_doors(const Context& c, const World& w, std::span<const Unit> from,
-                                                   std::span<const Unit> to) {
+                                                   std::span<const Unit> to, bool delete_shared = false) {
   auto in_from = [&](UnitId id) {
     return std::any_of(from.begin(), from.end(), [id](const Unit& u) { return u.id == id; });
   };
@@ -119,7 +125,11 @@ std::optional<std::vector<DoorChange>> carry_doors(const Context& c, const World
   for (const Door& d : w.doors()) {
     const bool fa = in_from(d.unit_a), fb = in_from(d.unit_b);
     if (!fa && !fb) continue;
-    if (fa && fb) return std::nullopt;
+    if (fa && fb) {
+      if (!delete_shared) return std::nullopt;
+      out.push_back({d.id, d, std::nullopt});
+      continue;
+    }
     const UnitId mine = fa ? d.unit_a : d.unit_b, other = fa ? d.unit_b : d.unit_a;
     const auto back = owner_of(c, d, from);
     const auto owner = owner_of(c, d, to);
@@ -132,22 +142,57 @@ std::optional<std::vector<DoorChange>> carry_doors(const Context& c, const World
   return out;
 }
 
-// The move's door changes are exactly `carry_doors` of its unit changes.
+// The move's changes of existing doors are exactly `carry_doors` of its unit changes (doors
+// it adds, SPLIT's seam doors, are checked by `seam_doors_match`).
 bool carries_doors(const Context& c, const World& w, const Move& m, std::initializer_list<const UnitChange*> removed,
-                   std::initializer_list<const UnitChange*> added) {
+                   std::initializer_list<const UnitChange*> added, bool delete_shared = false) {
   std::vector<Unit> from, to;
   for (const UnitChange* ch : removed) from.push_back(*w.find_unit(ch->id));
   for (const UnitChange* ch : added) to.push_back(*ch->after);
-  const auto want = carry_doors(c, w, from, to);
-  if (!want || want->size() != m.doors.size()) return false;
+  const auto want = carry_doors(c, w, from, to, delete_shared);
+  std::vector<const DoorChange*> existing;
+  for (const DoorChange& y : m.doors)
+    if (y.before) existing.push_back(&y);
+  if (!want || want->size() != existing.size()) return false;
   for (std::size_t i = 0; i < want->size(); ++i) {
     const DoorChange& x = (*want)[i];
-    const DoorChange& y = m.doors[i];
-    if (x.id != y.id || !y.before || !y.after || y.before->unit_a != x.before->unit_a ||
-        y.before->unit_b != x.before->unit_b || y.after->unit_a != x.after->unit_a ||
-        y.after->unit_b != x.after->unit_b || distance(y.after->a, x.after->a) > c.p.coincide ||
-        distance(y.after->b, x.after->b) > c.p.coincide)
+    const DoorChange& y = *existing[i];
+    if (x.id != y.id || y.before->unit_a != x.before->unit_a || y.before->unit_b != x.before->unit_b ||
+        x.after.has_value() != y.after.has_value())
       return false;
+    if (x.after && (y.after->unit_a != x.after->unit_a || y.after->unit_b != x.after->unit_b ||
+                    distance(y.after->a, x.after->a) > c.p.coincide || distance(y.after->b, x.after->b) > c.p.coincide))
+      return false;
+  }
+  return true;
+}
+
+// The distinct door candidates on the cut between a and b (none without a seam source).
+std::vector<CandidateDoor> seam_candidates(const Context& c, const OrientedRect& a, const OrientedRect& b) {
+  std::vector<CandidateDoor> out;
+  if (!c.src.seam_doors) return out;
+  for (const CandidateDoor& k : c.src.seam_doors(a, b)) {
+    if (!std::isfinite(k.a.x) || !std::isfinite(k.a.y) || !std::isfinite(k.b.x) || !std::isfinite(k.b.y)) continue;
+    const bool seen = std::any_of(out.begin(), out.end(),
+                                  [&](const CandidateDoor& o) { return same_segment(c, o.a, o.b, k.a, k.b); });
+    if (!seen) out.push_back(k);
+  }
+  return out;
+}
+
+// The doors m adds are a subset of the seam candidates between units ua and ub (new ids, one
+// candidate each).
+bool seam_doors_match(const Context& c, const World& w, const Move& m, const std::vector<CandidateDoor>& seam,
+                      UnitId ua, UnitId ub) {
+  std::vector<bool> used(seam.size(), false);
+  for (const DoorChange& y : m.doors) {
+    if (y.before) continue;
+    if (!y.after || w.find_door(y.id) || y.after->unit_a != std::min(ua, ub) || y.after->unit_b != std::max(ua, ub))
+      return false;
+    bool found = false;
+    for (std::size_t j = 0; j < seam.size() && !found; ++j)
+      if (!used[j] && same_segment(c, seam[j].a, seam[j].b, y.after->a, y.after->b)) used[j] = found = true;
+    if (!found) return false;
   }
   return true;
 }
@@ -172,11 +217,19 @@ std::optional<Forward> propose_split(const Context& c, const World& w, Rng& rng)
   const std::array<Unit, 2> halves{a, b};
   auto doors = carry_doors(c, w, std::span<const Unit>(&u, 1), halves);
   if (!doors) return std::nullopt;
+  const auto seam = seam_candidates(c, a.rect, b.rect);
+  DoorId next = w.next_door_id();
+  for (const CandidateDoor& k : seam)
+    if (std::bernoulli_distribution(0.5)(rng)) {
+      const Door d = c.ev.make_door(next++, std::min(a.id, b.id), std::max(a.id, b.id), k.a, k.b);
+      doors->push_back({d.id, std::nullopt, d});
+    }
   Forward fw;
   fw.move.kind = KernelKind::Split;
   fw.move.units = {{u.id, u, std::nullopt}, {a.id, std::nullopt, a}, {b.id, std::nullopt, b}};
   fw.move.doors = std::move(*doors);
-  fw.log_q = -std::log(static_cast<double>(units.size())) + log_cut_mass(c, u.rect, lines, lw, a.rect, b.rect);
+  fw.log_q = -std::log(static_cast<double>(units.size())) + log_cut_mass(c, u.rect, lines, lw, a.rect, b.rect) +
+             static_cast<double>(seam.size()) * std::log(0.5);
   return fw;
 }
 
@@ -186,11 +239,14 @@ double log_q_split(const Context& c, const World& w, const Move& m) {
   const UnitChange& ch = *s.removed[0];
   if (!unit_matches(c, w, ch.id, ch.before->rect) || !carries_doors(c, w, m, {&ch}, {s.added[0], s.added[1]}))
     return kNegInf;
+  const auto seam = seam_candidates(c, s.added[0]->after->rect, s.added[1]->after->rect);
+  if (!seam_doors_match(c, w, m, seam, s.added[0]->id, s.added[1]->id)) return kNegInf;
   const Unit& u = *w.find_unit(ch.id);
   const auto lines = c.src.split_lines(w, u);
   return -std::log(static_cast<double>(w.units().size())) +
          log_cut_mass(c, u.rect, lines, line_weights(c, lines), s.added[0]->after->rect,
-                      s.added[1]->after->rect);
+                      s.added[1]->after->rect) +
+         static_cast<double>(seam.size()) * std::log(0.5);
 }
 
 std::optional<Forward> propose_merge(const Context& c, const World& w, Rng& rng) {
@@ -204,7 +260,7 @@ std::optional<Forward> propose_merge(const Context& c, const World& w, Rng& rng)
   const std::uint8_t cls = r.rect.area() >= s.rect.area() ? r.lut_class : s.lut_class;
   const Unit u = c.ev.make_unit(w.next_unit_id(), *rect, cls);
   const std::array<Unit, 2> parts{r, s};
-  auto doors = carry_doors(c, w, parts, std::span<const Unit>(&u, 1));
+  auto doors = carry_doors(c, w, parts, std::span<const Unit>(&u, 1), static_cast<bool>(c.src.seam_doors));
   if (!doors) return std::nullopt;
   Forward fw;
   fw.move.kind = KernelKind::Merge;
@@ -222,7 +278,9 @@ double log_q_merge(const Context& c, const World& w, const Move& m) {
   if (!unit_matches(c, w, a.id, a.before->rect) || !unit_matches(c, w, b.id, b.before->rect)) return kNegInf;
   const auto rect = merged(c, w.find_unit(a.id)->rect, w.find_unit(b.id)->rect);
   if (!rect || !same_rect(*rect, s.added[0]->after->rect, c.p.coincide)) return kNegInf;
-  if (!carries_doors(c, w, m, {&a, &b}, {s.added[0]})) return kNegInf;
+  if (!carries_doors(c, w, m, {&a, &b}, {s.added[0]}, static_cast<bool>(c.src.seam_doors))) return kNegInf;
+  for (const DoorChange& y : m.doors)
+    if (!y.before) return kNegInf;  // MERGE adds no door
   return log_pair_probability(w, a.id, b.id);
 }
 

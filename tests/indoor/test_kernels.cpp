@@ -9,6 +9,7 @@
 #include <map>
 #include <numbers>
 
+#include "stdlib/indoor/detect/door.h"
 #include "stdlib/indoor/kernels.h"
 #include "tests/indoor/kernel_fixture.h"
 
@@ -253,6 +254,52 @@ TEST_CASE("SPLIT / MERGE carry the doors of the units they replace", "[indoor][k
   for (int i = 0; i < 300; ++i) {
     auto q = ks.propose(KernelKind::Merge, ab, rng);
     if (q) CHECK(q->move.units[0].id + q->move.units[1].id != 3);
+  }
+}
+
+// move.seam_doors: SPLIT allocates door candidates on its cut (each with probability 1/2),
+// MERGE deletes the doors joining its two units; without the source neither happens.
+TEST_CASE("SPLIT allocates the doors on its cut and MERGE deletes them (seam doors)", "[indoor][kernels]") {
+  KernelFixture fx;
+  KernelSources src = fx.sources();
+  src.seam_doors = [&fx](const OrientedRect& a, const OrientedRect& b) {
+    detect::DoorParams dp;
+    dp.min_door = 2.0;
+    return to_door_candidates(detect::detect_doors(fx.map, {a, b}, dp));
+  };
+  KernelSet ks(fx.evidence, src, params()), plain(fx.evidence, fx.sources(), params());
+  // A + B over D, no door: a SPLIT near x = 50 finds the A-B doorway on its cut.
+  const World w = world_of({fx.unit(1, {10, 10, 80, 40}), fx.unit(2, fx.rooms[3])});
+  auto near_50 = [](const Proposal& p) {
+    return p.move.units[0].id == 1 && std::abs(std::min(p.move.units[1].after->rect.cx, p.move.units[2].after->rect.cx) - 30.0) < 1.0;
+  };
+  const auto with_door = [&](const Proposal& p) { return near_50(p) && p.move.doors.size() == 1; };
+  const auto without = [&](const Proposal& p) { return near_50(p) && p.move.doors.empty(); };
+  check_round_trip(ks, KernelKind::Split, w, with_door);
+  check_round_trip(ks, KernelKind::Split, w, without);
+  const auto p = find(ks, KernelKind::Split, w, with_door);
+  REQUIRE(p);
+  const Door& d = *p->move.doors[0].after;
+  CHECK(std::abs(0.5 * (d.a.x + d.b.x) - 50.0) < 1.5);  // on the cut
+  CHECK(std::abs(0.5 * (d.a.y + d.b.y) - 25.0) < 3.0);  // at the doorway
+  // The cut's unit change alone is the plain SPLIT's, times 1/2 for the one candidate.
+  Move bare = p->move;
+  bare.doors.clear();
+  CHECK(ks.log_q(KernelKind::Split, w, bare) == Approx(plain.log_q(KernelKind::Split, w, bare) + std::log(0.5)).epsilon(1e-12));
+  CHECK(plain.log_q(KernelKind::Split, w, p->move) == -std::numeric_limits<double>::infinity());
+  // A door the detector does not give on the cut is not a SPLIT move.
+  Move moved = p->move;
+  moved.doors[0].after->a.y += 5.0;
+  moved.doors[0].after->b.y += 5.0;
+  CHECK(ks.log_q(KernelKind::Split, w, moved) == -std::numeric_limits<double>::infinity());
+  // MERGE of the two halves deletes their door; the plain MERGE declines such a pair.
+  const World halves = w.applied(p->move);
+  REQUIRE(halves.doors().size() == 1);
+  check_round_trip(ks, KernelKind::Merge, halves, [](const Proposal& q) { return q.move.units[0].id != 2 && q.move.units[1].id != 2; });
+  Rng rng(3);
+  for (int i = 0; i < 300; ++i) {
+    auto q = plain.propose(KernelKind::Merge, halves, rng);
+    if (q) CHECK((q->move.units[0].id == 2 || q->move.units[1].id == 2));
   }
 }
 

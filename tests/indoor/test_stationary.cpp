@@ -109,10 +109,11 @@ struct Visits {
 // Runs MH over ADD/REMOVE/SPLIT/MERGE/ALLOCATE/DELETE from sw's world and checks the visit
 // frequencies of the labelled states against `exact`.
 Visits check_visits(ScoredWorld& sw, const KernelSet& ks, std::uint64_t seed, const std::map<std::string, double>& exact,
-                    std::string (*label_of)(const World&)) {
+                    std::string (*label_of)(const World&), bool doors_kernels = true) {
   ScheduleStage st;
   st.until = std::numeric_limits<long long>::max();
   st.phi = {0.2, 0.2, 0.15, 0.15, 0.0, 0.0, 0.15, 0.15, 0.0};
+  if (!doors_kernels) st.phi = {0.25, 0.25, 0.25, 0.25, 0.0, 0.0, 0.0, 0.0, 0.0};
   DevSampler mh(sw, ks, {st}, seed);
   Visits v;
   const long long n = 400000;
@@ -131,11 +132,9 @@ Visits check_visits(ScoredWorld& sw, const KernelSet& ks, std::uint64_t seed, co
   return v;
 }
 
-}  // namespace
-
-TEST_CASE("MH over the discrete kernels samples the exact posterior", "[indoor][kernels][stationary]") {
-  const Toy toy(draw_plan(16, 24, {{2, 2, 12, 14}, {12, 2, 22, 14}}, 1, {{12, 8}}, 2), {{{12, 6}, {12, 10}, 0.9}});
-  // Exact posterior of the ten states, built with explicit moves.
+// Exact posterior of the ten states of the two-room toy (subsets of big / left / right, the L-R
+// door when both halves are there), built with explicit moves.
+std::map<std::string, double> ten_states(const Toy& toy) {
   std::map<std::string, double> exact;
   for (int mask = 0; mask < 8; ++mask)
     for (int door = 0; door < 2; ++door) {
@@ -147,12 +146,39 @@ TEST_CASE("MH over the discrete kernels samples the exact posterior", "[indoor][
       toy.score(m, label, exact);
     }
   normalise(exact);
+  return exact;
+}
+
+}  // namespace
+
+TEST_CASE("MH over the discrete kernels samples the exact posterior", "[indoor][kernels][stationary]") {
+  const Toy toy(draw_plan(16, 24, {{2, 2, 12, 14}, {12, 2, 22, 14}}, 1, {{12, 8}}, 2), {{{12, 6}, {12, 10}, 0.9}});
+  const std::map<std::string, double> exact = ten_states(toy);
   REQUIRE(exact.size() == 10);
 
   ScoredWorld sw(toy.map, toy.sp);
   const Visits v = check_visits(sw, toy.ks, 99, exact, label);
   // Every kernel of the schedule was accepted at least once.
   for (int k : {0, 1, 2, 3, 6, 7}) CHECK(v.stats.accepted[static_cast<std::size_t>(k)] > 0);
+}
+
+// The same ten states with seam doors (move.seam_doors) and no ALLOCATE / DELETE: the L-R door
+// is made only by a SPLIT that allocates it on its cut and removed only by a MERGE that
+// deletes it (REMOVE declines a unit with a door).
+TEST_CASE("MH with seam doors on SPLIT / MERGE samples the exact posterior", "[indoor][kernels][stationary]") {
+  const Toy toy(draw_plan(16, 24, {{2, 2, 12, 14}, {12, 2, 22, 14}}, 1, {{12, 8}}, 2), {{{12, 6}, {12, 10}, 0.9}});
+  const std::map<std::string, double> exact = ten_states(toy);
+  KernelSources src = toy.sources();
+  src.seam_doors = [&toy](const OrientedRect& a, const OrientedRect& b) {
+    const bool halves = (same_rect(a, kLeft) && same_rect(b, kRight)) || (same_rect(a, kRight) && same_rect(b, kLeft));
+    return halves ? toy.doors : std::vector<CandidateDoor>{};
+  };
+  const KernelSet ks(toy.ev, src, Toy::kernel_params());
+  ScoredWorld sw(toy.map, toy.sp);
+  const Visits v = check_visits(sw, ks, 5, exact, label, false);
+  CHECK(v.stats.accepted[2] > 0);
+  CHECK(v.stats.accepted[3] > 0);
+  CHECK(v.count.at("-LR+door") > 0);
 }
 
 namespace {

@@ -141,5 +141,6 @@ Source partner::inverse_distance() { return InverseDistance{}; }
 Source move::wall_shift(double sigma) { return WallShift{sigma}; }
 Source move::interchange() { return Interchange{}; }
 Source move::uniform_rect(double share) { return UniformRect{share}; }
+Source move::seam_doors(double min_width, double max_width) { return SeamDoors{min_width, max_width}; }
 
 }  // namespace ksmc::stdlib::indoor::blocks

@@ -32,7 +32,9 @@ struct IndoorModel::Pool {
 
 namespace {
 
-detect::DoorParams door_params(const blocks::detect::Doors& d, double resolution) {
+// A door detector's widths (metres) in cells; for detect.doors and move.seam_doors alike.
+template <class Widths>
+detect::DoorParams door_params(const Widths& d, double resolution) {
   detect::DoorParams dp;
   dp.min_door = d.min_width / resolution;
   dp.max_door = d.max_width / resolution;
@@ -73,6 +75,16 @@ IndoorModel::IndoorModel(std::shared_ptr<const SharedInput> in) : in_(std::move(
       }
       return it->second;
     };
+    if (!p->cfg->seam_doors.empty())
+      src.seam_doors = [p, this](const OrientedRect& a, const OrientedRect& b) {
+        std::vector<CandidateDoor> out;
+        for (const auto& sd : p->cfg->seam_doors) {
+          const auto found = to_door_candidates(
+              detect::detect_doors(in_->grid, {a, b}, door_params(sd, in_->resolution), detect::GridCheck::Trusted));
+          out.insert(out.end(), found.begin(), found.end());
+        }
+        return out;
+      };
     KernelParams kp = in_->kernel;
     if (!p->cfg->wall_shift.empty()) kp.shift_sigma = p->cfg->wall_shift.front().sigma;
     kp.uniform_share = 0.0;

@@ -79,7 +79,8 @@ SourcePool pool_of(const std::vector<blk::Source>& sources) {
                           [&](const blk::move::WallShift& x) { p.wall_shift.push_back(x); },
                           [](const blk::partner::InverseDistance&) {},  // the kernels' partner choice
                           [](const blk::move::Interchange&) {},
-                          [&](const blk::move::UniformRect& x) { p.uniform_rect.push_back(x); }},
+                          [&](const blk::move::UniformRect& x) { p.uniform_rect.push_back(x); },
+                          [&](const blk::move::SeamDoors& x) { p.seam_doors.push_back(x); }},
                s);
   return p;
 }

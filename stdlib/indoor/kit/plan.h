@@ -24,6 +24,7 @@ struct SourcePool {
   std::vector<blocks::detect::Doors> doors;       // candidates pooled
   std::vector<blocks::move::WallShift> wall_shift;  // the first one's sigma
   std::vector<blocks::move::UniformRect> uniform_rect;  // shares add up (at most 1)
+  std::vector<blocks::move::SeamDoors> seam_doors;      // candidates pooled
   std::vector<blocks::Source> declared;  // as declared (pools with equal sources are shared)
 };
 
