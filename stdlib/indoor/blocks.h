@@ -162,7 +162,7 @@ struct Interchange {  // shared-wall shift or junction swap of two units (interc
   bool operator==(const Interchange&) const = default;
 };
 struct UniformRect {  // a share of births drawn uniformly over all rectangles (birth / death)
-  double share = 0.05;
+  double share = 0.005;
   bool operator==(const UniformRect&) const = default;
 };
 struct SeamDoors {  // doors on a split's cut allocated with it, deleted by the merge (split / merge)
