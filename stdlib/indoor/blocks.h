@@ -167,6 +167,8 @@ struct UniformRect {  // a share of births drawn uniformly over all rectangles (
 };
 struct SeamDoors {  // doors on a split's cut allocated with it, deleted by the merge (split / merge)
   double min_width = 0.6, max_width = 2.0;  // m
+  double max_cut = 3.0;    // m: only cuts across a corridor (blocks::cut_across_corridor)
+  double min_ratio = 3.0;
   bool operator==(const SeamDoors&) const = default;
 };
 }  // namespace move
@@ -188,7 +190,7 @@ namespace move {
 Source wall_shift(double sigma);
 Source interchange();
 Source uniform_rect(double share);
-Source seam_doors(double min_width, double max_width);
+Source seam_doors(double min_width, double max_width, double max_cut, double min_ratio);
 }  // namespace move
 
 // ---- outputs ---------------------------------------------------------------------------------------

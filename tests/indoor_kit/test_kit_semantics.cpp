@@ -88,6 +88,25 @@ TEST_CASE("connecting walls, adjacency and the wall-length difference", "[indoor
   CHECK(blk::gaussian(s, 0.6, 0.3) == Approx(-2.0));
 }
 
+TEST_CASE("cut_across_corridor: a short cut between units that make a long rectangle", "[indoor_kit]") {
+  const OrientedRect left{50, 20, 100, 40, 0};    // x 0..100, y 0..40: a corridor piece 40 cells wide
+  const OrientedRect right{150, 20, 100, 40, 0};  // x 100..200: the next piece, cut 40 cells long
+  CHECK(blk::cut_across_corridor(left, right, 60, 3.0));   // 200 long across a 40-cell cut
+  CHECK(blk::cut_across_corridor(right, left, 60, 3.0));   // symmetric
+  CHECK(!blk::cut_across_corridor(left, right, 30, 3.0));  // the cut is longer than max_cut
+  CHECK(!blk::cut_across_corridor(left, right, 60, 6.0));  // 200 < 6 x 40
+  // The same pieces turned by a quarter: their walls are now the |h| sides (edges 1 and 3).
+  const OrientedRect up{20, 50, 40, 100, 0}, down{20, 150, 40, 100, 0};
+  CHECK(blk::cut_across_corridor(up, down, 60, 3.0));
+  CHECK(blk::cut_across_corridor(OrientedRect{50, 20, 40, 100, 1.5707963267948966},
+                                 OrientedRect{150, 20, 40, 100, 1.5707963267948966}, 60, 3.0));
+  // A room cut lengthwise: a cut 100 cells long, 80 across.
+  const OrientedRect a{50, 20, 100, 40, 0}, b{50, 60, 100, 40, 0};
+  CHECK(!blk::cut_across_corridor(a, b, 150, 3.0));
+  CHECK(blk::cut_across_corridor(a, b, 150, 0.8));
+  CHECK(!blk::cut_across_corridor(left, OrientedRect{500, 20, 100, 40, 0}, 60, 3.0));  // no shared wall
+}
+
 TEST_CASE("multi_door counts the doors attached to a unit", "[indoor_kit]") {
   const World w = world_of({{40, 30, 80, 60, 0}, {120, 30, 80, 60, 0}, {80, 80, 160, 40, 0}}, {{1, 3}, {2, 3}, {1, 2}});
   const blk::Scene s(w, 0.05);

@@ -141,6 +141,8 @@ Source partner::inverse_distance() { return InverseDistance{}; }
 Source move::wall_shift(double sigma) { return WallShift{sigma}; }
 Source move::interchange() { return Interchange{}; }
 Source move::uniform_rect(double share) { return UniformRect{share}; }
-Source move::seam_doors(double min_width, double max_width) { return SeamDoors{min_width, max_width}; }
+Source move::seam_doors(double min_width, double max_width, double max_cut, double min_ratio) {
+  return SeamDoors{min_width, max_width, max_cut, min_ratio};
+}
 
 }  // namespace ksmc::stdlib::indoor::blocks

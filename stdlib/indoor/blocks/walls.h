@@ -27,6 +27,12 @@ struct WallPair {
 };
 std::optional<WallPair> connecting_walls(const OrientedRect& a, const OrientedRect& b, double dilate_cells);
 
+// Whether the cut between two units that tile a rectangle runs across a corridor: their
+// connecting wall (dilate 2 cells) is at most `max_cut` cells long, and the rectangle they make
+// is at least `min_ratio` times as long, across the cut, as the cut. Symmetric; false when the
+// two share no wall.
+bool cut_across_corridor(const OrientedRect& a, const OrientedRect& b, double max_cut, double min_ratio);
+
 // The dilation of geom.adjacent's default (stdlib/indoor.ksm), used where a block has none.
 inline constexpr double kDefaultDilateCells = 2.0;
 

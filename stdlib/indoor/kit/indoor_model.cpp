@@ -9,6 +9,7 @@
 #include "stdlib/indoor/detect/door.h"
 #include "stdlib/indoor/detect/fsu.h"
 #include "stdlib/indoor/detect/split.h"
+#include "stdlib/indoor/blocks/walls.h"
 #include "stdlib/indoor/kit/door_cache.h"
 
 namespace ksmc::stdlib::indoor::kit {
@@ -79,6 +80,7 @@ IndoorModel::IndoorModel(std::shared_ptr<const SharedInput> in) : in_(std::move(
       src.seam_doors = [p, this](const OrientedRect& a, const OrientedRect& b) {
         std::vector<CandidateDoor> out;
         for (const auto& sd : p->cfg->seam_doors) {
+          if (!blocks::cut_across_corridor(a, b, sd.max_cut / in_->resolution, sd.min_ratio)) continue;
           const auto found = to_door_candidates(
               detect::detect_doors(in_->grid, {a, b}, door_params(sd, in_->resolution), detect::GridCheck::Trusted));
           out.insert(out.end(), found.begin(), found.end());
