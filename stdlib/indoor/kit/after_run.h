@@ -1,12 +1,14 @@
 // After the run: a local search on the chain's own target, from the chain's best state.
 //
-// Two kinds of change the chain cannot make, whatever they would gain:
-//  - removing a door-less unit that no detector proposes (REMOVE's reverse is ADD, whose
-//    probability of proposing such a rectangle is 0): strips inside rooms, squares on walls
-//    (unsupported_units.h);
-//  - merging two units that nearly tile a rectangle but not exactly, or that a door joins
-//    (MERGE needs an exact tiling and declines a door between the two): a corridor in pieces
-//    with a door between each two (merged_units.h);
+// Changes the chain cannot make, or cannot make with every domain's sources, whatever they
+// would gain:
+//  - removing a door-less unit that no detector proposes, unless the domain declares
+//    move.uniform_rect (without it REMOVE's reverse, ADD, proposes such a rectangle with
+//    probability 0): strips inside rooms, squares on walls (unsupported_units.h);
+//  - merging two units that nearly tile a rectangle but not exactly (MERGE needs an exact
+//    tiling), or that a door joins where move.seam_doors gives MERGE no reverse (no such
+//    source, or a cut that is not across a corridor): a corridor in pieces with a door between
+//    each two (merged_units.h);
 //  - splitting a unit along a wall that runs through it, with a door in the wall's opening or
 //    without: a hall over several rooms whose walls the chain's split lines miss
 //    (split_units.h).
