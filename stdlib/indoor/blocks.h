@@ -168,7 +168,7 @@ struct UniformRect {  // a share of births drawn uniformly over all rectangles (
 struct SeamDoors {  // doors on a split's cut allocated with it, deleted by the merge (split / merge)
   double min_width = 0.6, max_width = 2.0;  // m
   double max_cut = 3.0;    // m: only cuts across a corridor (blocks::cut_across_corridor)
-  double min_ratio = 3.0;
+  double min_ratio = 3.0;  // the two halves' length across the cut over the cut's length
   bool operator==(const SeamDoors&) const = default;
 };
 }  // namespace move

@@ -95,7 +95,8 @@ TEST_CASE("cut_across_corridor: a short cut between units that make a long recta
   CHECK(blk::cut_across_corridor(right, left, 60, 3.0));   // symmetric
   CHECK(!blk::cut_across_corridor(left, right, 30, 3.0));  // the cut is longer than max_cut
   CHECK(!blk::cut_across_corridor(left, right, 60, 6.0));  // 200 < 6 x 40
-  // The same pieces turned by a quarter: their walls are now the |h| sides (edges 1 and 3).
+  // Above, the shared walls are |h| sides (edges 1 and 3). Pieces stacked along y share |w|
+  // sides (edges 0 and 2), and so do pieces along x turned by a quarter.
   const OrientedRect up{20, 50, 40, 100, 0}, down{20, 150, 40, 100, 0};
   CHECK(blk::cut_across_corridor(up, down, 60, 3.0));
   CHECK(blk::cut_across_corridor(OrientedRect{50, 20, 40, 100, 1.5707963267948966},

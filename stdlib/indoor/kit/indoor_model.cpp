@@ -6,10 +6,10 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "stdlib/indoor/blocks/walls.h"
 #include "stdlib/indoor/detect/door.h"
 #include "stdlib/indoor/detect/fsu.h"
 #include "stdlib/indoor/detect/split.h"
-#include "stdlib/indoor/blocks/walls.h"
 #include "stdlib/indoor/kit/door_cache.h"
 
 namespace ksmc::stdlib::indoor::kit {
