@@ -108,6 +108,33 @@ TEST_CASE("cut_across_corridor: a short cut between units that make a long recta
   CHECK(!blk::cut_across_corridor(left, OrientedRect{500, 20, 100, 40, 0}, 60, 3.0));  // no shared wall
 }
 
+TEST_CASE("open_join: a free run on the midline between two joined units longer than max_gap", "[indoor_kit]") {
+  // Two pieces of a corridor 2 m wide at 0.05 m per cell: x 0..100 and 100..200, y 0..40,
+  // a wall 2 cells thick at x 99..100 with a gap of `gap` cells from y = 4.
+  const auto map_with_gap = [](int gap) {
+    ClassGrid map(40, 200, static_cast<std::uint8_t>(Cell::Free));
+    map(cv::Rect(99, 0, 2, 40)).setTo(static_cast<std::uint8_t>(Cell::Occupied));
+    if (gap > 0) map(cv::Rect(99, 4, 2, gap)).setTo(static_cast<std::uint8_t>(Cell::Free));
+    return map;
+  };
+  const World w = world_of({{50, 20, 100, 40, 0}, {150, 20, 100, 40, 0}});
+  const ClassGrid door = map_with_gap(18), cut = map_with_gap(34), wall = map_with_gap(0);
+  const blk::Scene sd(w, 0.05, &door), sc(w, 0.05, &cut), sw(w, 0.05, &wall);
+  CHECK(blk::geom::open_join(sc, sc.rect(0), sc.rect(1), 2.0, 1.5));   // a 1.7 m run > 1.5 m
+  CHECK(blk::geom::open_join(sc, sc.rect(1), sc.rect(0), 2.0, 1.5));   // symmetric
+  CHECK(!blk::geom::open_join(sc, sc.rect(0), sc.rect(1), 2.0, 2.0));  // not > 2 m
+  CHECK(!blk::geom::open_join(sd, sd.rect(0), sd.rect(1), 2.0, 1.5));  // a 0.9 m door
+  CHECK(blk::geom::open_join(sd, sd.rect(0), sd.rect(1), 2.0, 0.8));
+  CHECK(!blk::geom::open_join(sw, sw.rect(0), sw.rect(1), 2.0, 0.1));  // a wall: no run at all
+  CHECK(!blk::geom::open_join(sc, sc.rect(0), sc.rect(0), 2.0, 0.1));  // never with itself
+  const blk::Scene none(w, 0.05);
+  CHECK(!blk::geom::open_join(none, none.rect(0), none.rect(1), 2.0, 0.1));  // false without a map
+  // Units that do not join (a gap of 20 cells between them) are never open.
+  const World apart = world_of({{50, 20, 100, 40, 0}, {170, 20, 100, 40, 0}});
+  const blk::Scene sa(apart, 0.05, &cut);
+  CHECK(!blk::geom::open_join(sa, sa.rect(0), sa.rect(1), 2.0, 0.1));
+}
+
 TEST_CASE("multi_door counts the doors attached to a unit", "[indoor_kit]") {
   const World w = world_of({{40, 30, 80, 60, 0}, {120, 30, 80, 60, 0}, {80, 80, 160, 40, 0}}, {{1, 3}, {2, 3}, {1, 2}});
   const blk::Scene s(w, 0.05);
