@@ -76,8 +76,11 @@ bool blocked(const Scene& s, const Unit& u, double max_fraction);
 bool hollow(const Scene& s, const Unit& u, double min_width);
 // Two units with connecting walls (as geom.adjacent with `dilate`) whose common stretch has a
 // free run longer than `max_gap` (m) along the line midway between the two walls: no wall
-// separates them there, wider than a door. False without a map. Symmetric.
-bool open_join(const Scene& s, const Unit& a, const Unit& b, double dilate, double max_gap);
+// separates them there, wider than a door. With `max_share` < 1, a run longer than max_share of
+// the common stretch and at least `min_run` (m) counts too (a narrow corridor cut across). False
+// without a map. Symmetric.
+bool open_join(const Scene& s, const Unit& a, const Unit& b, double dilate, double max_gap, double max_share,
+               double min_run);
 }  // namespace geom
 
 // ---- functions and term priors -----------------------------------------------------------

@@ -120,19 +120,26 @@ TEST_CASE("open_join: a free run on the midline between two joined units longer 
   const World w = world_of({{50, 20, 100, 40, 0}, {150, 20, 100, 40, 0}});
   const ClassGrid door = map_with_gap(18), cut = map_with_gap(34), wall = map_with_gap(0);
   const blk::Scene sd(w, 0.05, &door), sc(w, 0.05, &cut), sw(w, 0.05, &wall);
-  CHECK(blk::geom::open_join(sc, sc.rect(0), sc.rect(1), 2.0, 1.5));   // a 1.7 m run > 1.5 m
-  CHECK(blk::geom::open_join(sc, sc.rect(1), sc.rect(0), 2.0, 1.5));   // symmetric
-  CHECK(!blk::geom::open_join(sc, sc.rect(0), sc.rect(1), 2.0, 2.0));  // not > 2 m
-  CHECK(!blk::geom::open_join(sd, sd.rect(0), sd.rect(1), 2.0, 1.5));  // a 0.9 m door
-  CHECK(blk::geom::open_join(sd, sd.rect(0), sd.rect(1), 2.0, 0.8));
-  CHECK(!blk::geom::open_join(sw, sw.rect(0), sw.rect(1), 2.0, 0.1));  // a wall: no run at all
-  CHECK(!blk::geom::open_join(sc, sc.rect(0), sc.rect(0), 2.0, 0.1));  // never with itself
+  CHECK(blk::geom::open_join(sc, sc.rect(0), sc.rect(1), 2.0, 1.5, 1.0, 1.2));   // a 1.7 m run > 1.5 m
+  CHECK(blk::geom::open_join(sc, sc.rect(1), sc.rect(0), 2.0, 1.5, 1.0, 1.2));   // symmetric
+  CHECK(!blk::geom::open_join(sc, sc.rect(0), sc.rect(1), 2.0, 2.0, 1.0, 1.2));  // not > 2 m
+  CHECK(!blk::geom::open_join(sd, sd.rect(0), sd.rect(1), 2.0, 1.5, 1.0, 1.2));  // a 0.9 m door
+  CHECK(blk::geom::open_join(sd, sd.rect(0), sd.rect(1), 2.0, 0.8, 1.0, 1.2));
+  CHECK(!blk::geom::open_join(sw, sw.rect(0), sw.rect(1), 2.0, 0.1, 1.0, 1.2));  // a wall: no run at all
+  CHECK(!blk::geom::open_join(sc, sc.rect(0), sc.rect(0), 2.0, 0.1, 1.0, 1.2));  // never with itself
   const blk::Scene none(w, 0.05);
-  CHECK(!blk::geom::open_join(none, none.rect(0), none.rect(1), 2.0, 0.1));  // false without a map
+  CHECK(!blk::geom::open_join(none, none.rect(0), none.rect(1), 2.0, 0.1, 1.0, 1.2));  // false without a map
   // Units that do not join (a gap of 20 cells between them) are never open.
   const World apart = world_of({{50, 20, 100, 40, 0}, {170, 20, 100, 40, 0}});
   const blk::Scene sa(apart, 0.05, &cut);
-  CHECK(!blk::geom::open_join(sa, sa.rect(0), sa.rect(1), 2.0, 0.1));
+  CHECK(!blk::geom::open_join(sa, sa.rect(0), sa.rect(1), 2.0, 0.1, 1.0, 1.2));
+  // The share test: the 1.7 m run is 34 of the 40 cells the two walls share.
+  CHECK(blk::geom::open_join(sc, sc.rect(0), sc.rect(1), 2.0, 2.0, 0.75, 1.2));   // 0.85 > 0.75, 1.7 m >= 1.2 m
+  CHECK(blk::geom::open_join(sc, sc.rect(1), sc.rect(0), 2.0, 2.0, 0.75, 1.2));   // symmetric
+  CHECK(!blk::geom::open_join(sc, sc.rect(0), sc.rect(1), 2.0, 2.0, 0.9, 1.2));   // 0.85 < 0.9
+  CHECK(!blk::geom::open_join(sc, sc.rect(0), sc.rect(1), 2.0, 2.0, 0.75, 1.8));  // 1.7 m < min_run
+  CHECK(!blk::geom::open_join(sd, sd.rect(0), sd.rect(1), 2.0, 2.0, 0.75, 0.1));  // a door: 0.45 of the join
+  CHECK(!blk::geom::open_join(sw, sw.rect(0), sw.rect(1), 2.0, 2.0, 0.01, 0.0));  // a wall: no run at all
 }
 
 TEST_CASE("multi_door counts the doors attached to a unit", "[indoor_kit]") {

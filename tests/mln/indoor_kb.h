@@ -85,7 +85,7 @@ struct IndoorKb {
     rule("no_sliver", 31, 1.0, "!Thin(u)", 1, {{thin, true, {0}}});
     rule("not_wall", 33, 1.0, "!Blocked(u)", 1, {{blocked, true, {0}}});
     rule("no_hollow", 37, 1.0, "!Hollow(u)", 1, {{hollow, true, {0}}});
-    rule("one_space", 40, std::exp(3.0) / (1.0 + std::exp(3.0)), "!OpenJoin(a, b)", 2, {{open_join, true, {0, 1}}});
+    rule("one_space", 47, std::exp(10.0) / (1.0 + std::exp(10.0)), "!OpenJoin(a, b)", 2, {{open_join, true, {0, 1}}});
   }
 };
 

@@ -84,7 +84,8 @@ bool hollow(const Scene& s, const Unit& u, double min_width) {
   return any_sample(r, nu, nv, [&](double x, double y) { return free_distance_at(*field, x, y) > reach; });
 }
 
-bool open_join(const Scene& s, const Unit& a, const Unit& b, double dilate, double max_gap) {
+bool open_join(const Scene& s, const Unit& a, const Unit& b, double dilate, double max_gap, double max_share,
+               double min_run) {
   const ClassGrid* map = s.map();
   if (map == nullptr || a.id == b.id) return false;
   const auto [p, q] = ordered(a, b);
@@ -101,6 +102,9 @@ bool open_join(const Scene& s, const Unit& a, const Unit& b, double dilate, doub
   const double off = 0.5 * (dx * (q0.y - p0.y) - dy * (q0.x - p0.x));  // signed half distance across
   const double nx = -dy, ny = dx;
   const double need = max_gap / s.resolution();
+  // A run over `max_share` of the stretch is open too when it is at least `min_run` long: a
+  // corridor narrower than max_gap, cut across, never has a run over max_gap.
+  const double need_share = std::max(max_share * (hi - lo), min_run / s.resolution() - 1e-9);
   double run = 0.0;
   for (double t = lo + 0.5; t < hi; t += 1.0) {
     const int col = static_cast<int>(std::floor(p0.x + dx * t + nx * off));
@@ -108,7 +112,7 @@ bool open_join(const Scene& s, const Unit& a, const Unit& b, double dilate, doub
     const bool free = row >= 0 && col >= 0 && row < map->rows && col < map->cols &&
                       (*map)(row, col) == static_cast<std::uint8_t>(Cell::Free);
     run = free ? run + 1.0 : 0.0;
-    if (run > need) return true;
+    if (run > need || (max_share < 1.0 && run > need_share)) return true;
   }
   return false;
 }

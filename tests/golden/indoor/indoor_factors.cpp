@@ -16,7 +16,7 @@ constexpr double kW_room_df3c = 0.8472978603872034;  // prob 0.7
 constexpr double kW_sale_3041 = 2.1972245773362196;  // prob 0.9
 constexpr double kW_sale_none = 2.1972245773362196;  // prob 0.9
 constexpr double kW_sale_one = 4.394449;  // w 4.394449
-constexpr double kW_one_space = 3;  // w 3.0
+constexpr double kW_one_space = 10;  // w 10.0
 
 }  // namespace
 

@@ -47,9 +47,9 @@ bool extract_Blocked(const Scene& s, const std::int32_t* c) {
 bool extract_Hollow(const Scene& s, const std::int32_t* c) {
   return blk::geom::hollow(s, s.rect(c[0]), 4.0);
 }
-// extract OpenJoin(a, b) = geom.open_join(unit[a], unit[b], dilate = 2 cells, max_gap = 2 m);
+// extract OpenJoin(a, b) = geom.open_join(unit[a], unit[b], dilate = 2 cells, max_gap = 2 m, max_share = 0.75, min_run = 1.2 m);
 bool extract_OpenJoin(const Scene& s, const std::int32_t* c) {
-  return blk::geom::open_join(s, s.rect(c[0]), s.rect(c[1]), 2.0, 2.0);
+  return blk::geom::open_join(s, s.rect(c[0]), s.rect(c[1]), 2.0, 2.0, 0.75, 1.2);
 }
 // prior for a, b where P(SaLe(a, b)) > 0.5: gaussian(wall_length_diff(unit[a], unit[b]), sigma = 1 m);
 double prior_SaLe_gaussian(const Scene& s, const std::int32_t* c) {
@@ -70,7 +70,7 @@ blk::Binding make_binding() {
   b.extractors.push_back({kPred_Thin, &extract_Thin, "extract Thin(u) = geom.thin(unit[u], min_width = 0.6 m);"});
   b.extractors.push_back({kPred_Blocked, &extract_Blocked, "extract Blocked(u) = geom.blocked(unit[u], max_fraction = 0.5);"});
   b.extractors.push_back({kPred_Hollow, &extract_Hollow, "extract Hollow(u) = geom.hollow(unit[u], min_width = 4 m);"});
-  b.extractors.push_back({kPred_OpenJoin, &extract_OpenJoin, "extract OpenJoin(a, b) = geom.open_join(unit[a], unit[b], dilate = 2 cells, max_gap = 2 m);"});
+  b.extractors.push_back({kPred_OpenJoin, &extract_OpenJoin, "extract OpenJoin(a, b) = geom.open_join(unit[a], unit[b], dilate = 2 cells, max_gap = 2 m, max_share = 0.75, min_run = 1.2 m);"});
   b.priors.push_back(blk::rect_penalty(1.0, 0.08726646259971647));
   b.priors.push_back(blk::overlap_penalty(1.0));
   b.priors.push_back(blk::mln());
