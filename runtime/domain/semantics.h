@@ -32,6 +32,7 @@
 // (MaxWalkSAT for a component too large to enumerate).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -152,29 +153,70 @@ std::shared_ptr<const Outcome> SemanticsCore::run(std::size_t n, bool full, std:
                                                   const Outcome* base, F&& truth) {
   const bool all = prepare(n, full, changed, base);
   std::vector<std::int32_t> args;
+  // Evaluates one atom: false when two constant-type arguments repeat a constant.
+  const auto visit = [&](std::size_t k, const Shape& shape, std::size_t flat) {
+    bool repeated = false;
+    for (std::size_t i = 0; i < args.size() && !repeated; ++i) {
+      if (!shape.of_constant_type[i]) continue;
+      for (std::size_t j = 0; j < i; ++j) repeated = repeated || (shape.of_constant_type[j] && args[j] == args[i]);
+    }
+    if (repeated) {
+      bits_[k][flat] = 0;
+      return;
+    }
+    if ((++stats_.extractor_calls & 0xFFF) == 0) io::throw_if_cancelled("evaluating the evidence");
+    bits_[k][flat] = truth(k, args.data()) ? 1 : 0;
+  };
+  // The changed constants, ascending; the atoms they touch are enumerated directly, so a
+  // proposal costs O(changed x n^(arity-1)) per predicate, not O(n^arity).
+  std::vector<std::int32_t> moved;
+  if (!all)
+    for (std::size_t c = 0; c < changed_.size(); ++c)
+      if (changed_[c] != 0) moved.push_back(static_cast<std::int32_t>(c));
   for (std::size_t k = 0; k < extracted_.size(); ++k) {
     const Shape& shape = shapes_[k];
-    auto& bits = bits_[k];
-    args.assign(shape.radix.size(), 0);
-    for (std::size_t flat = 0; flat < bits.size(); ++flat) {
-      if (flat != 0)  // odometer: the last argument runs fastest
-        for (std::size_t i = args.size(); i-- > 0;) {
-          if (++args[i] < shape.radix[i]) break;
-          args[i] = 0;
+    const std::size_t m = shape.radix.size();
+    args.assign(m, 0);
+    if (all) {
+      for (std::size_t flat = 0; flat < bits_[k].size(); ++flat) {
+        if (flat != 0)  // odometer: the last argument runs fastest
+          for (std::size_t i = m; i-- > 0;) {
+            if (++args[i] < shape.radix[i]) break;
+            args[i] = 0;
+          }
+        visit(k, shape, flat);
+      }
+      continue;
+    }
+    if (bits_[k].empty()) continue;
+    std::vector<std::size_t> stride(m, 1);
+    for (std::size_t i = m; i-- > 1;) stride[i - 1] = stride[i] * static_cast<std::size_t>(shape.radix[i]);
+    // An atom is visited once: in the pass of its first constant-type argument that changed.
+    for (std::size_t at = 0; at < m; ++at) {
+      if (!shape.of_constant_type[at]) continue;
+      for (const std::int32_t c : moved) {
+        if (c >= shape.radix[at]) break;
+        std::fill(args.begin(), args.end(), 0);
+        args[at] = c;
+        for (;;) {
+          bool earlier = false;
+          for (std::size_t j = 0; j < at && !earlier; ++j)
+            earlier = shape.of_constant_type[j] && changed_[static_cast<std::size_t>(args[j])] != 0;
+          if (!earlier) {
+            std::size_t flat = 0;
+            for (std::size_t i = 0; i < m; ++i) flat += static_cast<std::size_t>(args[i]) * stride[i];
+            visit(k, shape, flat);
+          }
+          // Odometer over the arguments other than `at`, the last running fastest.
+          std::size_t i = m;
+          while (i-- > 0) {
+            if (i == at) continue;
+            if (++args[i] < shape.radix[i]) break;
+            args[i] = 0;
+          }
+          if (i == static_cast<std::size_t>(-1)) break;
         }
-      bool touched = all, repeated = false;
-      for (std::size_t i = 0; i < args.size(); ++i) {
-        if (!shape.of_constant_type[i]) continue;
-        touched = touched || changed_[static_cast<std::size_t>(args[i])] != 0;
-        for (std::size_t j = 0; j < i; ++j) repeated = repeated || (shape.of_constant_type[j] && args[j] == args[i]);
       }
-      if (!touched) continue;
-      if (repeated) {
-        bits[flat] = 0;
-        continue;
-      }
-      if ((++stats_.extractor_calls & 0xFFF) == 0) io::throw_if_cancelled("evaluating the evidence");
-      bits[flat] = truth(k, args.data()) ? 1 : 0;
     }
   }
   return finish(n);

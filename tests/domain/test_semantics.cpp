@@ -126,6 +126,17 @@ TEST_CASE("semantics: update re-evaluates only atoms of changed constants and eq
     CHECK(v->possible);
     require_same_values(*v, *fresh.evaluate(next, 4));
   }
+  SECTION("several changed constants: each touched atom evaluated once") {
+    ToyScene next = s;
+    next.x[1] = 8.7;  // near 3 now, not 0
+    next.x[3] = 30.0;
+    const std::array<std::int32_t, 2> three_one{3, 1};  // any order
+    const auto before = sem.core().stats().extractor_calls;
+    const auto u = sem.update(next, 4, three_one, *base);
+    // Ordered pairs with 1 or 3 in them: 12 less (0, 2) and (2, 0); unary atoms of 1 and 3.
+    CHECK(sem.core().stats().extractor_calls - before == 10 + 2);
+    require_same_values(*u, *fresh.evaluate(next, 4));
+  }
   SECTION("another n evaluates every atom") {
     ToyScene more = s;
     more.x.push_back(0.2);
