@@ -81,6 +81,9 @@ bool hollow(const Scene& s, const Unit& u, double min_width);
 // without a map. Symmetric.
 bool open_join(const Scene& s, const Unit& a, const Unit& b, double dilate, double max_gap, double max_share,
                double min_run);
+// Two units with connecting walls (as geom.adjacent with `dilate`) where a's wall is its shorter
+// side: b lies off a's end, as the next piece of a corridor does. Not symmetric.
+bool end_join(const Scene& s, const Unit& a, const Unit& b, double dilate);
 }  // namespace geom
 
 // ---- functions and term priors -----------------------------------------------------------

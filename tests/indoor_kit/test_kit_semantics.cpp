@@ -142,6 +142,23 @@ TEST_CASE("open_join: a free run on the midline between two joined units longer 
   CHECK(!blk::geom::open_join(sw, sw.rect(0), sw.rect(1), 2.0, 2.0, 0.01, 0.0));  // a wall: no run at all
 }
 
+TEST_CASE("end_join: b lies off a's shorter side", "[indoor_kit]") {
+  // a: a corridor piece x 0..40, y 0..100 (its |w| sides, edges 0 and 2, are the short ones);
+  // b: the next piece, y 100..200; c: a room x 40..240 beside a's long side; d: far away.
+  const World w = world_of({{20, 50, 40, 100, 0}, {20, 150, 40, 100, 0}, {140, 50, 200, 100, 0}, {500, 500, 40, 40, 0}});
+  const blk::Scene s(w, 0.05);
+  CHECK(blk::geom::end_join(s, s.rect(0), s.rect(1), 2.0));   // b off a's end
+  CHECK(blk::geom::end_join(s, s.rect(1), s.rect(0), 2.0));   // and a off b's
+  CHECK(!blk::geom::end_join(s, s.rect(0), s.rect(2), 2.0));  // c beside a's long side
+  CHECK(blk::geom::end_join(s, s.rect(2), s.rect(0), 2.0));   // a off c's end (c's 100-cell side)
+  CHECK(!blk::geom::end_join(s, s.rect(0), s.rect(3), 2.0));  // no connecting walls
+  CHECK(!blk::geom::end_join(s, s.rect(0), s.rect(0), 2.0));  // never with itself
+  // A quarter turn swaps the roles of the sides.
+  const World t = world_of({{50, 20, 40, 100, 1.5707963267948966}, {150, 20, 40, 100, 1.5707963267948966}});
+  const blk::Scene st(t, 0.05);
+  CHECK(blk::geom::end_join(st, st.rect(0), st.rect(1), 2.0));
+}
+
 TEST_CASE("multi_door counts the doors attached to a unit", "[indoor_kit]") {
   const World w = world_of({{40, 30, 80, 60, 0}, {120, 30, 80, 60, 0}, {80, 80, 160, 40, 0}}, {{1, 3}, {2, 3}, {1, 2}});
   const blk::Scene s(w, 0.05);

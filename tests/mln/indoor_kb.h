@@ -14,6 +14,7 @@ struct IndoorKb {
   runtime::mln::Program program;
   std::int32_t unit = 0;
   std::int32_t roli = 0, coli = 0, hali = 0, muldoor = 0, adj = 0, thin = 0, blocked = 0, hollow = 0, open_join = 0;
+  std::int32_t narrow = 0, end_join = 0;
   std::int32_t room = 0, corr = 0, hall = 0, other = 0, sale = 0;
 
   // only_seed_rules: the rules of DESIGN.md section 6 and the defect rules, without the two
@@ -37,6 +38,8 @@ struct IndoorKb {
     blocked = pred("Blocked", 1, false);
     hollow = pred("Hollow", 1, false);
     open_join = pred("OpenJoin", 2, false);
+    narrow = pred("Narrow", 1, false);
+    end_join = pred("EndJoin", 2, false);
     room = pred("Room", 1, true);
     corr = pred("Corr", 1, true);
     hall = pred("Hall", 1, true);
@@ -85,7 +88,9 @@ struct IndoorKb {
     rule("no_sliver", 31, 1.0, "!Thin(u)", 1, {{thin, true, {0}}});
     rule("not_wall", 33, 1.0, "!Blocked(u)", 1, {{blocked, true, {0}}});
     rule("no_hollow", 37, 1.0, "!Hollow(u)", 1, {{hollow, true, {0}}});
-    rule("one_space", 47, std::exp(10.0) / (1.0 + std::exp(10.0)), "!OpenJoin(a, b)", 2, {{open_join, true, {0, 1}}});
+    rule("one_space", 48, std::exp(10.0) / (1.0 + std::exp(10.0)), "!OpenJoin(a, b)", 2, {{open_join, true, {0, 1}}});
+    rule("corr_continues", 52, std::exp(4.0) / (1.0 + std::exp(4.0)), "Narrow(a) ^ OpenJoin(a, b) ^ EndJoin(a, b) ^ Corr(b) => Corr(a)", 2,
+         {{narrow, true, {0}}, {open_join, true, {0, 1}}, {end_join, true, {0, 1}}, {corr, true, {1}}, {corr, false, {0}}});
   }
 };
 

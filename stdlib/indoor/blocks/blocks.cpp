@@ -117,6 +117,19 @@ bool open_join(const Scene& s, const Unit& a, const Unit& b, double dilate, doub
   return false;
 }
 
+bool end_join(const Scene&, const Unit& a, const Unit& b, double dilate) {
+  if (a.id == b.id) return false;
+  const auto [p, q] = ordered(a, b);
+  const auto w = connecting_walls(p->rect, q->rect, dilate);
+  if (!w) return false;
+  // Edges 0 and 2 are |w| long, 1 and 3 |h| (cut_across_corridor): a's wall is its shorter side
+  // when the side away from it is longer.
+  const int wall = p == &a ? w->wall_a : w->wall_b;
+  const double along = wall % 2 == 0 ? std::abs(a.rect.w) : std::abs(a.rect.h);
+  const double away = wall % 2 == 0 ? std::abs(a.rect.h) : std::abs(a.rect.w);
+  return along < away;
+}
+
 }  // namespace geom
 
 double wall_length_diff(const Scene& s, const Unit& a, const Unit& b) {

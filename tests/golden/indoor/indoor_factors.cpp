@@ -17,6 +17,7 @@ constexpr double kW_sale_3041 = 2.1972245773362196;  // prob 0.9
 constexpr double kW_sale_none = 2.1972245773362196;  // prob 0.9
 constexpr double kW_sale_one = 4.394449;  // w 4.394449
 constexpr double kW_one_space = 10;  // w 10.0
+constexpr double kW_corr_continues = 4;  // w 4.0
 
 }  // namespace
 
@@ -33,6 +34,8 @@ const mln::Program& program() {
     p.add_predicate({"Blocked", {kType_unit}, false, false, -1});
     p.add_predicate({"Hollow", {kType_unit}, false, false, -1});
     p.add_predicate({"OpenJoin", {kType_unit, kType_unit}, false, false, -1});
+    p.add_predicate({"Narrow", {kType_unit}, false, false, -1});
+    p.add_predicate({"EndJoin", {kType_unit, kType_unit}, false, false, -1});
     p.add_predicate({"Room", {kType_unit}, true, false, -1});
     p.add_predicate({"Corr", {kType_unit}, true, false, -1});
     p.add_predicate({"Hall", {kType_unit}, true, false, -1});
@@ -115,6 +118,11 @@ const mln::Program& program() {
                   {{"a", kType_unit, false}, {"b", kType_unit, false}},
                   {{kPred_OpenJoin, true, {mln::Term::var(0), mln::Term::var(1)}}},
                   kW_one_space, false, "!OpenJoin(a, b)", {"domains/indoor.ksm", 0}});
+    // corr_continues: Narrow(a) ^ OpenJoin(a, b) ^ EndJoin(a, b) ^ Corr(b) => Corr(a)
+    p.add_clause({"corr_continues",
+                  {{"a", kType_unit, false}, {"b", kType_unit, false}},
+                  {{kPred_Narrow, true, {mln::Term::var(0)}}, {kPred_OpenJoin, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_EndJoin, true, {mln::Term::var(0), mln::Term::var(1)}}, {kPred_Corr, true, {mln::Term::var(1)}}, {kPred_Corr, false, {mln::Term::var(0)}}},
+                  kW_corr_continues, false, "Narrow(a) ^ OpenJoin(a, b) ^ EndJoin(a, b) ^ Corr(b) => Corr(a)", {"domains/indoor.ksm", 0}});
     return p;
   }();
   return p;
@@ -344,6 +352,31 @@ void ground_one_space(mln::FactorContext& g, std::int32_t clause) {
   }
 }
 
+// corr_continues: Narrow(a) ^ OpenJoin(a, b) ^ EndJoin(a, b) ^ Corr(b) => Corr(a)
+void ground_corr_continues(mln::FactorContext& g, std::int32_t clause) {
+  const std::int32_t n_unit = g.size(kType_unit);
+  for (std::int32_t v_a = 0; v_a < n_unit; ++v_a) {
+    if (!g.ev(kPred_Narrow, v_a)) {  // !Narrow(a)
+      g.satisfied(kW_corr_continues, std::int64_t{n_unit});
+      continue;
+    }
+    for (std::int32_t v_b = 0; v_b < n_unit; ++v_b) {
+      if (!g.ev(kPred_OpenJoin, std::int64_t{v_a} * n_unit + v_b)) {  // !OpenJoin(a, b)
+        g.satisfied(kW_corr_continues);
+        continue;
+      }
+      if (!g.ev(kPred_EndJoin, std::int64_t{v_a} * n_unit + v_b)) {  // !EndJoin(a, b)
+        g.satisfied(kW_corr_continues);
+        continue;
+      }
+      g.begin();
+      if (g.query(kPred_Corr, v_b, true)) { g.satisfied(kW_corr_continues); continue; }  // !Corr(b)
+      if (g.query(kPred_Corr, v_a, false)) { g.satisfied(kW_corr_continues); continue; }  // Corr(a)
+      g.soft(kW_corr_continues, clause);
+    }
+  }
+}
+
 }  // namespace
 
 mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) {
@@ -365,6 +398,7 @@ mln::Grounding ground(const mln::Domain& domain, const mln::Evidence& evidence) 
   ground_not_wall(g, clause++);
   ground_no_hollow(g, clause++);
   ground_one_space(g, clause++);
+  ground_corr_continues(g, clause++);
   mln::fold_forced_atoms(grounding);
   return grounding;
 }

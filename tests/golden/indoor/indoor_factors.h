@@ -23,11 +23,13 @@ enum Pred : std::int32_t {
   kPred_Blocked = 6,  // evidence Blocked(unit)
   kPred_Hollow = 7,  // evidence Hollow(unit)
   kPred_OpenJoin = 8,  // evidence OpenJoin(unit, unit)
-  kPred_Room = 9,  // query Room(unit)
-  kPred_Corr = 10,  // query Corr(unit)
-  kPred_Hall = 11,  // query Hall(unit)
-  kPred_Other = 12,  // query Other(unit)
-  kPred_SaLe = 13,  // query SaLe(unit, unit)
+  kPred_Narrow = 9,  // evidence Narrow(unit)
+  kPred_EndJoin = 10,  // evidence EndJoin(unit, unit)
+  kPred_Room = 11,  // query Room(unit)
+  kPred_Corr = 12,  // query Corr(unit)
+  kPred_Hall = 13,  // query Hall(unit)
+  kPred_Other = 14,  // query Other(unit)
+  kPred_SaLe = 15,  // query SaLe(unit, unit)
 };
 
 // The clause program this file was generated from: names, weights, source locations.

@@ -39,6 +39,14 @@ bool extract_MulDoor(const Scene& s, const std::int32_t* c) {
 bool extract_Thin(const Scene& s, const std::int32_t* c) {
   return blk::geom::thin(s, s.rect(c[0]), 0.6);
 }
+// extract Narrow(u) = geom.thin(unit[u], min_width = 2.6 m);
+bool extract_Narrow(const Scene& s, const std::int32_t* c) {
+  return blk::geom::thin(s, s.rect(c[0]), 2.6);
+}
+// extract EndJoin(a, b) = geom.end_join(unit[a], unit[b], dilate = 2 cells);
+bool extract_EndJoin(const Scene& s, const std::int32_t* c) {
+  return blk::geom::end_join(s, s.rect(c[0]), s.rect(c[1]), 2.0);
+}
 // extract Blocked(u) = geom.blocked(unit[u], max_fraction = 0.5);
 bool extract_Blocked(const Scene& s, const std::int32_t* c) {
   return blk::geom::blocked(s, s.rect(c[0]), 0.5);
@@ -68,6 +76,8 @@ blk::Binding make_binding() {
   b.extractors.push_back({kPred_Adj, &extract_Adj, "extract Adj(a, b) = geom.adjacent(unit[a], unit[b], dilate = 2 cells);"});
   b.extractors.push_back({kPred_MulDoor, &extract_MulDoor, "extract MulDoor(u) = geom.multi_door(unit[u], door, min_doors = 2);"});
   b.extractors.push_back({kPred_Thin, &extract_Thin, "extract Thin(u) = geom.thin(unit[u], min_width = 0.6 m);"});
+  b.extractors.push_back({kPred_Narrow, &extract_Narrow, "extract Narrow(u) = geom.thin(unit[u], min_width = 2.6 m);"});
+  b.extractors.push_back({kPred_EndJoin, &extract_EndJoin, "extract EndJoin(a, b) = geom.end_join(unit[a], unit[b], dilate = 2 cells);"});
   b.extractors.push_back({kPred_Blocked, &extract_Blocked, "extract Blocked(u) = geom.blocked(unit[u], max_fraction = 0.5);"});
   b.extractors.push_back({kPred_Hollow, &extract_Hollow, "extract Hollow(u) = geom.hollow(unit[u], min_width = 4 m);"});
   b.extractors.push_back({kPred_OpenJoin, &extract_OpenJoin, "extract OpenJoin(a, b) = geom.open_join(unit[a], unit[b], dilate = 2 cells, max_gap = 2 m, max_share = 0.75, min_run = 1.2 m);"});
