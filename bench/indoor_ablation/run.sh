@@ -2,8 +2,8 @@
 # bench/indoor_ablation/run.sh BUILD_DIR OUT_DIR [ITERATIONS] [SEEDS]
 # The ablation of issue 11 (seed Fig. 3.34 / 3.35): the variants of domains/indoor.ksm built
 # by `cmake --build BUILD_DIR --target indoor_ablation` (weak prior only, + the seed's
-# same-length prior, + no slivers, + not on walls, + one space, + no hollow units) and the
-# shipped binary (full knowledge: + only two rooms share a wall length), on lab_b.png and five
+# same-length prior, + no slivers, + not on walls, + one space, + no hollow units, + only two
+# rooms share a wall length) and the shipped binary (full knowledge: + a corridor continues), on lab_b.png and five
 # Bormann maps. VARIANTS="a b ..." runs a subset. Per variant and map
 # (median over SEEDS): K, units, R / P / IoU against the Bormann ground truth
 # (segmentation.png, else labels.png), the conditional prior bindings (SaLe pairs) more than
@@ -19,7 +19,7 @@ if [ ! -d "$maps" ]; then
 fi
 scorer=$build/bin/roomseg_score
 names=(lab_b office_a office_c lab_a_scan lab_d_scan Freiburg52_scan)
-variants=(${VARIANTS:-weak seed no_sliver not_wall one_space no_hollow full})
+variants=(${VARIANTS:-weak seed no_sliver not_wall one_space no_hollow sale full})
 mkdir -p "$out"
 printf '| variant | map | K | units | R | P | IoU | SaLe > 2 sd | sd units (last 1000) | sd log p (last 1000) | it/s |\n'
 printf '|---|---|---|---|---|---|---|---|---|---|---|\n'
