@@ -170,6 +170,7 @@ std::shared_ptr<const Outcome> SemanticsCore::run(std::size_t n, bool full, std:
   // The changed constants, ascending; the atoms they touch are enumerated directly, so a
   // proposal costs O(changed x n^(arity-1)) per predicate, not O(n^arity).
   std::vector<std::int32_t> moved;
+  std::vector<std::size_t> stride;
   if (!all)
     for (std::size_t c = 0; c < changed_.size(); ++c)
       if (changed_[c] != 0) moved.push_back(static_cast<std::int32_t>(c));
@@ -189,7 +190,7 @@ std::shared_ptr<const Outcome> SemanticsCore::run(std::size_t n, bool full, std:
       continue;
     }
     if (bits_[k].empty()) continue;
-    std::vector<std::size_t> stride(m, 1);
+    stride.assign(m, 1);
     for (std::size_t i = m; i-- > 1;) stride[i - 1] = stride[i] * static_cast<std::size_t>(shape.radix[i]);
     // An atom is visited once: in the pass of its first constant-type argument that changed.
     for (std::size_t at = 0; at < m; ++at) {

@@ -122,12 +122,9 @@ bool end_join(const Scene&, const Unit& a, const Unit& b, double dilate) {
   const auto [p, q] = ordered(a, b);
   const auto w = connecting_walls(p->rect, q->rect, dilate);
   if (!w) return false;
-  // Edges 0 and 2 are |w| long, 1 and 3 |h| (cut_across_corridor): a's wall is its shorter side
-  // when the side away from it is longer.
+  // a's wall is its shorter side when the side away from it is longer.
   const int wall = p == &a ? w->wall_a : w->wall_b;
-  const double along = wall % 2 == 0 ? std::abs(a.rect.w) : std::abs(a.rect.h);
-  const double away = wall % 2 == 0 ? std::abs(a.rect.h) : std::abs(a.rect.w);
-  return along < away;
+  return edge_length(a.rect, wall) < depth_from_edge(a.rect, wall);
 }
 
 }  // namespace geom

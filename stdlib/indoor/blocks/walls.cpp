@@ -77,11 +77,7 @@ std::optional<WallPair> connecting_walls(const OrientedRect& a, const OrientedRe
 bool cut_across_corridor(const OrientedRect& a, const OrientedRect& b, double max_cut, double min_ratio) {
   const auto w = connecting_walls(a, b, 2.0);
   if (!w || w->overlap > max_cut) return false;
-  // Corners run (-w,-h), (+w,-h), (+w,+h), (-w,+h): edges 0 and 2 are |w| long, 1 and 3 |h|;
-  // a unit's depth away from its wall is its other side.
-  const double depth_a = w->wall_a % 2 == 0 ? std::abs(a.h) : std::abs(a.w);
-  const double depth_b = w->wall_b % 2 == 0 ? std::abs(b.h) : std::abs(b.w);
-  return depth_a + depth_b >= min_ratio * w->overlap;
+  return depth_from_edge(a, w->wall_a) + depth_from_edge(b, w->wall_b) >= min_ratio * w->overlap;
 }
 
 }  // namespace ksmc::stdlib::indoor::blocks

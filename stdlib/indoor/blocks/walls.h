@@ -2,6 +2,7 @@
 // connecting walls of two units (adjacency, wall-length difference).
 #pragma once
 
+#include <cmath>
 #include <optional>
 
 #include "stdlib/indoor/rect.h"
@@ -26,6 +27,11 @@ struct WallPair {
   double length_a = 0.0, length_b = 0.0;  // cells
 };
 std::optional<WallPair> connecting_walls(const OrientedRect& a, const OrientedRect& b, double dilate_cells);
+
+// A rectangle's side along its edge `edge` and its depth away from that edge (the other side).
+// Corners run (-w,-h), (+w,-h), (+w,+h), (-w,+h): edges 0 and 2 are |w| long, 1 and 3 |h|.
+inline double edge_length(const OrientedRect& r, int edge) { return edge % 2 == 0 ? std::abs(r.w) : std::abs(r.h); }
+inline double depth_from_edge(const OrientedRect& r, int edge) { return edge % 2 == 0 ? std::abs(r.h) : std::abs(r.w); }
 
 // Whether the cut between two units that tile a rectangle runs across a corridor: their
 // connecting wall (dilate 2 cells) is at most `max_cut` cells long, and the rectangle they make
