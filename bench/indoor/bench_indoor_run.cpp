@@ -24,8 +24,8 @@
 #include <vector>
 
 #include "runtime/mcmc/engine.h"
+#include "runtime/mcmc/plateau.h"
 #include "stdlib/indoor/kit/indoor_model.h"
-#include "stdlib/indoor/kit/plateau.h"
 #include "tests/indoor_kit/kit_fixture.h"
 
 namespace mcmc = ksmc::runtime::mcmc;
@@ -41,7 +41,7 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-std::string cell(const std::optional<kit::PlateauPoint>& p, bool seconds) {
+std::string cell(const std::optional<mcmc::PlateauPoint>& p, bool seconds) {
   if (!p) return "-";
   char buf[64];
   if (seconds) std::snprintf(buf, sizeof buf, "%.2f", p->seconds);
@@ -107,7 +107,7 @@ int main(int argc, char** argv) {
   // The gain of one corrected cell under the run's own likelihood tables.
   const double one_cell = [&] {
     auto m0 = setup.model_factory(0);
-    return kit::one_cell_gain(ksmc::stdlib::indoor::LikelihoodModel(
+    return ksmc::stdlib::indoor::one_cell_gain(ksmc::stdlib::indoor::LikelihoodModel(
         static_cast<kit::IndoorModel&>(*m0).input().score.tables));
   }();
   std::printf("plateau: best(i + %llu) - best(i) <= min_gain; strict: min_gain = 0; one cell: min_gain = %.3f nats\n"
@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
   std::vector<double> one_it, one_s, one_known, strict_it, strict_s;
   int strict_missing = 0, one_missing = 0;
   for (int r = 0; r < runs; ++r) {
-    kit::PlateauDetector strict({window, 0.0}), loose({window, one_cell});
+    mcmc::PlateauDetector strict({window, 0.0}), loose({window, one_cell});
     std::atomic<bool> stop{false};
     double best = -std::numeric_limits<double>::infinity();
     const auto t0 = std::chrono::steady_clock::now();

@@ -1,6 +1,7 @@
 #include "runtime/cli/checked_flags.h"
 
 #include <charconv>
+#include <cmath>
 #include <stdexcept>
 #include <system_error>
 
@@ -23,6 +24,15 @@ std::uint64_t parse_count(std::string_view flag, std::string_view text, std::uin
   if (ec == std::errc::result_out_of_range) throw refuse(" (too large)");
   if (ec != std::errc() || p != text.data() + text.size()) throw refuse("");
   if (v < min || v > max) throw refuse("");
+  return v;
+}
+
+double parse_amount(std::string_view flag, std::string_view text) {
+  double v = 0.0;
+  const auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || ec != std::errc() || p != text.data() + text.size() || !std::isfinite(v) || v < 0.0) {
+    throw UsageError(fmt::format("{}: expected a number >= 0, got '{}'", flag, text));
+  }
   return v;
 }
 

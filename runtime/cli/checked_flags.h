@@ -18,6 +18,10 @@ inline constexpr std::uint64_t kCountMax = std::numeric_limits<std::uint64_t>::m
 std::uint64_t parse_count(std::string_view flag, std::string_view text, std::uint64_t min = 0,
                           std::uint64_t max = kCountMax);
 
+// "--plateau-gain", "abc" -> throws UsageError
+// "--plateau-gain: expected a number >= 0, got 'abc'" (also for nan, inf and negatives).
+double parse_amount(std::string_view flag, std::string_view text);
+
 // Default of --max-input-mb: the largest input file read without the flag.
 inline constexpr std::uint64_t kDefaultMaxInputMb = 2048;
 

@@ -33,7 +33,10 @@ namespace {
 // Counts are parsed as text and checked by parse_count (CLI11 would wrap "-5" to 2^64-5).
 struct CommonFlags {
   std::string seed = "1";
-  std::string iterations;
+  std::string iterations;  // a count, or "auto"
+  std::string max_iterations = "1000000";
+  std::string plateau_window = "5000";
+  std::string plateau_gain;  // "" = the domain's (DomainSetup::plateau_gain)
   std::string chains = "1";
   std::string threads = "0";
   std::string out;
@@ -53,7 +56,10 @@ struct CommonFlags {
 // The checked values of CommonFlags.
 struct Counts {
   std::uint64_t seed = 1;
-  std::uint64_t iterations = 0;
+  std::uint64_t iterations = 0;  // with auto: the cap (--max-iterations)
+  bool iterations_auto = false;
+  std::uint64_t plateau_window = 0;
+  std::optional<double> plateau_gain;
   unsigned chains = 1;
   unsigned threads = 0;
   std::uint64_t samples = 0;
@@ -65,10 +71,30 @@ struct Counts {
   std::uint64_t max_memory_mb = 0;
 };
 
-Counts check_counts(const CommonFlags& cf) {
+// The plateau flags, given on the command line or not (they apply to --iterations auto only).
+struct PlateauFlagsGiven {
+  bool max_iterations = false, window = false, gain = false;
+};
+
+Counts check_counts(const CommonFlags& cf, const PlateauFlagsGiven& given) {
   Counts c;
   c.seed = parse_count("--seed", cf.seed);
-  c.iterations = parse_count("--iterations", cf.iterations, 1);
+  c.iterations_auto = cf.iterations == "auto";
+  if (c.iterations_auto) {
+    c.iterations = parse_count("--max-iterations", cf.max_iterations, 1);
+    c.plateau_window = parse_count("--plateau-window", cf.plateau_window, 1);
+    if (!cf.plateau_gain.empty()) c.plateau_gain = parse_amount("--plateau-gain", cf.plateau_gain);
+  } else {
+    try {
+      c.iterations = parse_count("--iterations", cf.iterations, 1);
+    } catch (const UsageError& e) {
+      throw UsageError(std::string(e.what()) + ", or auto (until the plateau)");
+    }
+    for (const auto& [on, flag] : {std::pair{given.max_iterations, "--max-iterations"},
+                                   std::pair{given.window, "--plateau-window"}, std::pair{given.gain, "--plateau-gain"}}) {
+      if (on) throw UsageError(fmt::format("{} applies to --iterations auto only (here --iterations {})", flag, cf.iterations));
+    }
+  }
   c.chains = static_cast<unsigned>(parse_count("--chains", cf.chains, 1, 4096));
   c.threads = static_cast<unsigned>(parse_count("--threads", cf.threads, 0, 4096));
   c.samples = parse_count("--samples", cf.samples);
@@ -202,17 +228,32 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec) {
 
 int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, const CliStreams& io) {
   CommonFlags cf;
-  cf.iterations = std::to_string(spec.default_iterations);
+  cf.iterations = spec.default_iterations_auto ? "auto" : std::to_string(spec.default_iterations);
   cf.out = spec.name + "_out";
   DomainFlagStorage dst;
   std::vector<std::string> adapter_values(input_adapters().size());  // "" = flag not given
 
   CLI::App app(spec.description, spec.name);
+  struct {
+    CLI::Option *max_iterations = nullptr, *window = nullptr, *gain = nullptr;
+  } plateau_options;
   try {
     app.set_version_flag("--version", fmt::format("{} {} (ksmc {})", spec.name, spec.version, ksmc_version()));
     app.add_option("inputs", cf.inputs, spec.inputs_help)->type_name("INPUT");
     app.add_option("--seed", cf.seed, "random seed; same seed, same result")->capture_default_str();
-    app.add_option("--iterations", cf.iterations, "iterations per chain")->capture_default_str();
+    app.add_option("--iterations", cf.iterations,
+                   "iterations per chain, or auto: each chain runs until its plateau (the best log posterior gains at "
+                   "most --plateau-gain over --plateau-window iterations), at most --max-iterations")
+        ->capture_default_str();
+    plateau_options.max_iterations =
+        app.add_option("--max-iterations", cf.max_iterations, "with --iterations auto: the most iterations a chain runs")
+            ->capture_default_str();
+    plateau_options.window =
+        app.add_option("--plateau-window", cf.plateau_window, "with --iterations auto: the window of the plateau test")
+            ->capture_default_str();
+    plateau_options.gain = app.add_option("--plateau-gain", cf.plateau_gain,
+                                          "with --iterations auto: the largest gain (nats) over the window that counts "
+                                          "as none (default: the domain's unit, 0 = strict)");
     app.add_option("--chains", cf.chains, "independent chains (1 to 4096)")->capture_default_str();
     app.add_option("--threads", cf.threads, "threads for the chains (0 = one per core)")->capture_default_str();
     app.add_option("--out", cf.out, "output folder (created if missing)")->type_name("DIR")->capture_default_str();
@@ -252,7 +293,9 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
                            : fmt::format("expected {} to {} {}, got {}", spec.min_inputs, spec.max_inputs,
                                          spec.inputs_help, given));
     }
-    counts = check_counts(cf);
+    counts = check_counts(cf, PlateauFlagsGiven{plateau_options.max_iterations->count() > 0,
+                                                plateau_options.window->count() > 0,
+                                                plateau_options.gain->count() > 0});
     domain_flags = collect_domain_flags(spec, dst);
   } catch (const CLI::CallForHelp&) {
     io.out << app.help();
@@ -300,7 +343,9 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
   input.seed = counts.seed;
   input.chains = counts.chains;
   input.threads = counts.threads;
-  input.iterations = counts.iterations;
+  // With auto, estimates assume 20 plateau windows (lab_b's plateau comes at 10-20).
+  input.iterations = counts.iterations_auto ? std::min(counts.iterations, 20 * counts.plateau_window) : counts.iterations;
+  input.iterations_auto = counts.iterations_auto;
   input.max_memory_mb = counts.max_memory_mb;
   input.quiet = cf.quiet;
   input.out_dir = cf.out;
@@ -337,19 +382,33 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
   cfg.seed = counts.seed;
   cfg.chains = counts.chains;
   cfg.threads = counts.threads;
-  cfg.burn_in = counts.burn_in.value_or(counts.iterations / 2);
+  // A run of fixed length samples its second half; a run until the plateau keeps the last
+  // samples (its length is not known in advance).
+  cfg.burn_in = counts.burn_in.value_or(counts.iterations_auto ? 0 : counts.iterations / 2);
   cfg.samples = counts.samples;
   cfg.thin = counts.thin;
+  cfg.keep_last_samples = counts.iterations_auto;
+  if (counts.iterations_auto) {
+    cfg.stop_at_plateau = mcmc::PlateauCriterion{counts.plateau_window, counts.plateau_gain.value_or(setup.plateau_gain)};
+  }
   if (counts.trace_every != 0) cf.trace = true;  // --trace-every implies --trace
   if (cf.trace) {
-    cfg.trace_every = counts.trace_every != 0 ? counts.trace_every : std::max<std::uint64_t>(1, counts.iterations / 1000);
+    const std::uint64_t span = counts.iterations_auto ? counts.plateau_window * 20 : counts.iterations;
+    cfg.trace_every = counts.trace_every != 0 ? counts.trace_every : std::max<std::uint64_t>(1, span / 1000);
   }
   ProgressPrinter printer(io.err, io.tty);
   if (!cf.quiet) cfg.progress = [&printer](const mcmc::Progress& p) { printer(p); };
 
   cfg.cancel = &InterruptGuard::flag();
-  stages(fmt::format("building the model{} and sampling {} iterations", cfg.chains > 1 ? " of each chain" : "",
-                     cfg.iterations));
+  if (cfg.stop_at_plateau) {
+    stages(fmt::format("building the model{} and sampling until the plateau (best gains at most {:.3g} nats over {} "
+                       "iterations; at most {} iterations)",
+                       cfg.chains > 1 ? " of each chain" : "", cfg.stop_at_plateau->min_gain,
+                       cfg.stop_at_plateau->window, cfg.iterations));
+  } else {
+    stages(fmt::format("building the model{} and sampling {} iterations", cfg.chains > 1 ? " of each chain" : "",
+                       cfg.iterations));
+  }
   mcmc::RunResult result;
   try {
     result = engine->run(cfg);
@@ -366,10 +425,21 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
     info.interrupted = InterruptGuard::signal_name();
   }
 
+  if (cfg.stop_at_plateau && !interrupted) {
+    for (const mcmc::ChainResult& c : result.chains) {
+      if (c.plateau) continue;
+      io.err << fmt::format("{}: warning: chain {} reached no plateau within {} iterations (best log posterior still "
+                            "gaining more than {:.3g} nats per {} iterations); raise --max-iterations for a settled "
+                            "result\n",
+                            spec.name, c.chain, c.iterations, cfg.stop_at_plateau->min_gain, cfg.stop_at_plateau->window);
+    }
+  }
+
   stages("writing the outputs");
   info.domain_name = spec.name;
   info.domain_version = spec.version;
   info.config = cfg;
+  info.plateau_gain_what = counts.plateau_gain ? "given (--plateau-gain)" : setup.plateau_gain_what;
   info.domain_extra = setup.summary_extra.is_object() ? setup.summary_extra : nlohmann::json::object();
   try {
     if (setup.write_results || !cf.evidence_out.empty()) {

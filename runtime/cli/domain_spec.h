@@ -80,7 +80,8 @@ struct DomainInput {
   std::uint64_t seed = 1;
   unsigned chains = 1;
   unsigned threads = 0;            // --threads (0 = one per core)
-  std::uint64_t iterations = 0;    // per chain
+  std::uint64_t iterations = 0;    // per chain; with --iterations auto, the expected count (estimates)
+  bool iterations_auto = false;    // --iterations auto: each chain runs until its plateau
   std::uint64_t max_memory_mb = kDefaultMaxMemoryMb;  // --max-memory-mb: kits refuse estimates above it
   bool quiet = false;              // --quiet: no estimate line, no progress
   std::filesystem::path out_dir;
@@ -131,6 +132,11 @@ struct DomainSetup {
   // `--evidence-out FILE` (kits: runtime::domain::Semantics::evidence_db). Optional: without
   // it, --evidence-out is a usage error.
   std::function<std::string(mcmc::Model& best)> evidence_db;
+  // The default --plateau-gain of --iterations auto (runtime/mcmc/plateau.h): gains of the best
+  // log posterior at most this large over the window count as none. 0 = strict. A kit sets a
+  // unit of its own (indoor: one cell, stdlib/indoor/likelihood.h one_cell_gain) and names it.
+  double plateau_gain = 0.0;
+  std::string plateau_gain_what = "strict: no gain at all";
 };
 
 struct DomainSpec {
@@ -141,6 +147,9 @@ struct DomainSpec {
   std::size_t min_inputs = 1;
   std::size_t max_inputs = 1;
   std::uint64_t default_iterations = 10000;
+  // --iterations defaults to auto (until each chain's plateau, at most --max-iterations)
+  // instead of default_iterations.
+  bool default_iterations_auto = false;
   std::vector<DomainFlag> flags;
   // Loads the input. Throw std::exception on bad input with a message naming the file
   // and the place ("map.yaml:3: resolution must be positive"): exit code 1. A

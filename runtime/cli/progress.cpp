@@ -26,6 +26,11 @@ std::string format_progress(const mcmc::Progress& p, bool with_bar) {
                           ? 1.0
                           : static_cast<double>(p.iterations_done) / static_cast<double>(p.iterations_total);
   const double rate = p.seconds > 0.0 ? static_cast<double>(p.iterations_done) / p.seconds : 0.0;
+  if (p.until_plateau) {  // the length is not known: no bar, no percentage
+    return fmt::format("{} it (until the plateau, at most {}), {} it/s, log posterior {} (best {}), acceptance {:.1f}%",
+                       p.iterations_done, p.iterations_total, si(rate), lp_text(p.current_log_posterior),
+                       lp_text(p.best_log_posterior), 100.0 * p.acceptance_rate);
+  }
   std::string bar;
   if (with_bar) {
     constexpr int kWidth = 24;

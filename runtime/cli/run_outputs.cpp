@@ -1,5 +1,6 @@
 #include "runtime/cli/run_outputs.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -38,7 +39,17 @@ nlohmann::json make_summary(const mcmc::RunResult& r, const mcmc::Schedule& sche
   j["domain"]["version"] = info.domain_version;
   j["seed"] = info.config.seed;
   j["chains"] = info.config.chains;
-  j["iterations_per_chain"] = info.config.iterations;
+  j["iterations_per_chain"] = info.config.iterations;  // with until_plateau: the most a chain runs
+  if (info.config.stop_at_plateau) {
+    j["until_plateau"] = {{"window", info.config.stop_at_plateau->window},
+                          {"min_gain", info.config.stop_at_plateau->min_gain},
+                          {"min_gain_is", info.plateau_gain_what},
+                          {"judged_every", info.config.plateau_every},
+                          {"chains_reached", std::count_if(r.chains.begin(), r.chains.end(),
+                                                           [](const mcmc::ChainResult& c) { return c.plateau.has_value(); })}};
+  } else {
+    j["until_plateau"] = nullptr;
+  }
   j["iterations"] = r.iterations;
   j["burn_in"] = info.config.burn_in;
   j["thin"] = info.config.thin;
@@ -72,7 +83,9 @@ nlohmann::json make_summary(const mcmc::RunResult& r, const mcmc::Schedule& sche
                       {"acceptance_rate", selected == 0 ? 0.0
                                                         : static_cast<double>(c.accepted()) /
                                                               static_cast<double>(selected)},
-                      {"samples", c.samples.size()}});
+                      {"samples", c.samples.size()},
+                      {"plateau_iteration", c.plateau ? nlohmann::json(c.plateau->iteration) : nlohmann::json(nullptr)},
+                      {"plateau_seconds", c.plateau ? nlohmann::json(c.plateau->seconds) : nlohmann::json(nullptr)}});
     samples += c.samples.size();
   }
   j["chain_results"] = std::move(chains);

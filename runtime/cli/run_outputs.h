@@ -29,6 +29,7 @@ struct RunInfo {
   std::vector<io::StagedDir::Entry> outputs;  // every file of the folder but summary.json
   std::string interrupted;             // the signal that stopped the run ("SIGTERM"), "" = none
   nlohmann::json domain_extra = nlohmann::json::object();
+  std::string plateau_gain_what;       // what config.stop_at_plateau->min_gain stands for
 };
 
 nlohmann::json make_summary(const mcmc::RunResult& result, const mcmc::Schedule& schedule,

@@ -7,6 +7,7 @@
 #include <exception>
 #include <limits>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 
@@ -150,6 +151,10 @@ ChainResult Engine::run_chain(unsigned chain, const EngineConfig& cfg, Monitor& 
   // inside one: polls in the model's own computations (grounding, inference, evidence) are
   // shielded, so a signal cannot abandon a half-made proposal and lose the run's state.
   const io::CancelShield between_iterations_only;
+  std::optional<PlateauDetector> plateau;
+  if (cfg.stop_at_plateau) plateau.emplace(*cfg.stop_at_plateau);
+  const std::uint64_t plateau_every = std::max<std::uint64_t>(cfg.plateau_every, 1);
+  std::size_t next_sample = 0;  // keep_last_samples: the slot the next sample overwrites
   while (done < cfg.iterations) {
     if ((cfg.cancel != nullptr && cfg.cancel->load(std::memory_order_relaxed)) ||
         abort.load(std::memory_order_relaxed)) {
@@ -212,11 +217,21 @@ ChainResult Engine::run_chain(unsigned chain, const EngineConfig& cfg, Monitor& 
     if (done > cfg.burn_in && (done - cfg.burn_in) % thin == 0) {
       if (res.samples.size() < cfg.samples) {
         res.samples.push_back(PosteriorSample{done, lp, model->snapshot()});
+      } else if (cfg.keep_last_samples && cfg.samples != 0) {
+        res.samples[next_sample] = PosteriorSample{done, lp, model->snapshot()};
+        next_sample = (next_sample + 1) % res.samples.size();
       }
       if (cfg.observer) cfg.observer(chain, done, *model);
     }
     if (done % kPublishEvery == 0) publish();
+    if (plateau && done % plateau_every == 0 &&
+        plateau->observe(done, res.best_log_posterior, seconds_since(start))) {
+      res.plateau = plateau->plateau();
+      break;
+    }
   }
+  // The ring of the last samples, oldest first.
+  std::rotate(res.samples.begin(), res.samples.begin() + static_cast<std::ptrdiff_t>(next_sample), res.samples.end());
   if (cfg.trace_every != 0 && (res.trace.empty() || res.trace.back().iteration != done)) push_trace();
   res.iterations = done;
   res.final_log_posterior = lp;
@@ -227,6 +242,7 @@ ChainResult Engine::run_chain(unsigned chain, const EngineConfig& cfg, Monitor& 
 
 RunResult Engine::run(const EngineConfig& cfg) const {
   if (cfg.chains == 0) throw std::invalid_argument("engine: chains must be at least 1");
+  if (cfg.stop_at_plateau) (void)PlateauDetector(*cfg.stop_at_plateau);  // checks the criterion
   const auto start = Clock::now();
   const unsigned n = cfg.chains;
   unsigned workers = cfg.threads != 0 ? cfg.threads : std::max(1U, std::thread::hardware_concurrency());
@@ -256,6 +272,7 @@ RunResult Engine::run(const EngineConfig& cfg) const {
     if (!cfg.progress) return;
     Progress p;
     p.iterations_total = cfg.iterations * n;
+    p.until_plateau = cfg.stop_at_plateau.has_value();
     p.best_log_posterior = kNegInf;
     std::uint64_t selected = 0;
     std::uint64_t accepted = 0;

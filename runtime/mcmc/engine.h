@@ -10,9 +10,11 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "runtime/mcmc/model.h"
+#include "runtime/mcmc/plateau.h"
 #include "runtime/mcmc/results.h"
 #include "runtime/mcmc/schedule.h"
 
@@ -27,6 +29,7 @@ struct Progress {
   double acceptance_rate = 0.0;        // accepted / selected, all chains
   double seconds = 0.0;
   bool finished = false;               // the last call of a run
+  bool until_plateau = false;          // EngineConfig::stop_at_plateau: iterations_total is a cap
 };
 
 // Called on a chain's thread for every thinned iteration after burn-in (whether or not
@@ -46,6 +49,14 @@ struct EngineConfig {
   std::function<void(const Progress&)> progress;  // optional
   double progress_interval_s = 0.1;               // at most 10 calls per second by default
   SampleObserver observer;                        // optional
+  // Stops each chain at its plateau (plateau.h), judged every `plateau_every` iterations on
+  // the chain's best log posterior; `iterations` is then the most a chain runs. The decision
+  // depends on the chain's own iterations and values only, so the run stays reproducible.
+  std::optional<PlateauCriterion> stop_at_plateau;
+  std::uint64_t plateau_every = 100;
+  // Stored samples: the first `samples` after burn-in, or with keep_last_samples the last
+  // ones (for a run whose length is not known in advance: stop_at_plateau).
+  bool keep_last_samples = false;
 };
 
 class Engine {

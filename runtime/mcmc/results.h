@@ -3,10 +3,12 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "runtime/mcmc/model.h"
+#include "runtime/mcmc/plateau.h"
 
 namespace ksmc::runtime::mcmc {
 
@@ -77,6 +79,9 @@ struct ChainResult {
   std::vector<KernelStats> kernels;  // in kernel-table order
   std::vector<TracePoint> trace;
   std::vector<PosteriorSample> samples;
+  // With EngineConfig::stop_at_plateau: where the chain's plateau began (iteration, best log
+  // posterior, wall seconds); the chain stopped when it became known. nullopt: not reached.
+  std::optional<PlateauPoint> plateau;
 
   std::uint64_t accepted() const noexcept;
 };

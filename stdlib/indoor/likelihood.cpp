@@ -1,6 +1,8 @@
 #include "stdlib/indoor/likelihood.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -121,5 +123,21 @@ cv::Mat1b render_predicted(const CoverageGrid& grid) {
       out(r, c) = static_cast<std::uint8_t>(grid.predicted(r, c));
   return out;
 }
+
+double one_cell_gain(const LikelihoodModel& lik) {
+  double gain = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < kMaxLutClasses; ++k)
+    for (int o = 0; o < 3; ++o) {
+      const auto obs = static_cast<Cell>(o);
+      double other = -std::numeric_limits<double>::infinity();
+      for (int x = 0; x < 3; ++x)
+        if (x != o) other = std::max(other, lik.log_p(k, obs, static_cast<Predicted>(x)));
+      gain = std::min(gain, lik.log_p(k, obs, static_cast<Predicted>(o)) - other);
+    }
+  if (!(gain > 0.0))
+    throw std::invalid_argument("one_cell_gain: some likelihood table does not favour the correct prediction of a cell");
+  return gain;
+}
+
 
 }  // namespace ksmc::stdlib::indoor

@@ -34,6 +34,13 @@ class LikelihoodModel {
   std::array<double, kHistogramSize> log_{};
 };
 
+// The smallest gain in log p(D|W) from correcting one cell under `lik`: over the observed
+// classes o and likelihood classes k, log p_k(o|o) - max_{x != o} log p_k(o|x) (predicted x,
+// observed o; Free/Unknown/Wall against Free/Unknown/Occupied). ln 8 = 2.079 for Table 3.1.
+// The unit of the indoor binary's plateau (--iterations auto, runtime/mcmc/plateau.h).
+// Throws std::invalid_argument if no table rewards the correct prediction (result <= 0).
+double one_cell_gain(const LikelihoodModel& lik);
+
 // Geometry of the predicted map.
 struct RasterParams {
   double wall_thickness = 1.0;  // wall band width inside each unit, cells

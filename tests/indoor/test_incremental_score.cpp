@@ -328,3 +328,13 @@ TEST_CASE("a preview scores a move like apply, commit equals apply and discard r
   CHECK(not_previewable > 100);  // door moves and large moves take the apply path
   CHECK_THROWS_AS(sw.commit(), std::logic_error);
 }
+
+TEST_CASE("one_cell_gain: ln 8 for Table 3.1, the weakest table decides", "[indoor]") {
+  CHECK(one_cell_gain(LikelihoodModel()) == Approx(std::log(8.0)));
+  LikelihoodTable soft = LikelihoodTable::table_3_1();
+  soft.p[0][2] = 0.4;  // predicted free, observed occupied: lenient
+  CHECK(one_cell_gain(LikelihoodModel({LikelihoodTable::table_3_1(), soft})) == Approx(std::log(0.8 / 0.4)));
+  LikelihoodTable flat = LikelihoodTable::table_3_1();
+  flat.p[1][1] = 0.1;
+  CHECK_THROWS_AS(one_cell_gain(LikelihoodModel({flat})), std::invalid_argument);
+}

@@ -116,6 +116,13 @@ TEST_CASE("cli: usage errors exit 2 with a message") {
       {{"--start-override", "x", in.string()}, "--start-override: expected an integer, got 'x'"},
       {{"--burn-in", "10", "--iterations", "5", in.string()}, "--burn-in 10 exceeds --iterations 5"},
       {{"--start-override", "99", in.string()}, "start must be in [0, n)"},
+      {{"--iterations", "sometimes", in.string()}, "got 'sometimes', or auto (until the plateau)"},
+      {{"--max-iterations", "500", in.string()}, "--max-iterations applies to --iterations auto only (here --iterations 5000)"},
+      {{"--iterations", "100", "--plateau-window", "50", in.string()}, "--plateau-window applies to --iterations auto only"},
+      {{"--iterations", "auto", "--plateau-gain", "nan", in.string()}, "--plateau-gain: expected a number >= 0, got 'nan'"},
+      {{"--iterations", "auto", "--plateau-gain", "-1", in.string()}, "--plateau-gain: expected a number >= 0, got '-1'"},
+      {{"--iterations", "auto", "--plateau-window", "0", in.string()}, "--plateau-window: expected a whole number from 1"},
+      {{"--iterations", "auto", "--max-iterations", "0", in.string()}, "--max-iterations: expected a whole number from 1"},
   };
   for (const auto& c : cases) {
     auto args = c.args;
@@ -297,4 +304,72 @@ TEST_CASE("cli: Ctrl-C stops the run, writes complete outputs, exit 130") {
   CHECK(s.at("iterations").get<std::uint64_t>() < 100000000);
   CHECK(files_in(out) == std::vector<std::string>{"best_state.json", "report.html", "samples.jsonl", "summary.json",
                                                   "toy_result.json", "trace.csv"});
+}
+
+TEST_CASE("cli: --iterations auto runs each chain until its plateau and says so") {
+  TempDir d("auto");
+  const auto in = d.write("toy.json", R"({"n": 20, "start": 3})");
+  const fs::path out = d.path / "out";
+  const std::vector<std::string> args{in.string(), "--seed", "3", "--iterations", "auto", "--plateau-window", "2000",
+                                      "--chains", "2", "--samples", "4", "--thin", "10", "--out", out.string()};
+  const Run r = run(args);
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK(r.err.find("until the plateau, at most 2000000") != std::string::npos);  // progress: no percentage
+  CHECK(r.err.find("warning") == std::string::npos);
+  const auto s = nlohmann::json::parse(slurp(out / "summary.json"));
+  CHECK(s.at("until_plateau").at("window") == 2000);
+  CHECK(s.at("until_plateau").at("min_gain") == 0.0);
+  CHECK(s.at("until_plateau").at("chains_reached") == 2);
+  CHECK(s.at("iterations_per_chain") == 1000000);
+  std::uint64_t total = 0;
+  for (const auto& c : s.at("chain_results")) {
+    const std::uint64_t it = c.at("iterations"), plateau = c.at("plateau_iteration");
+    CHECK(it < 1000000);
+    CHECK(it >= plateau + 2000);        // known one window after it began
+    CHECK(c.at("best_iteration") <= plateau);  // nothing better came after
+    CHECK(c.at("samples") == 4);
+    total += it;
+  }
+  CHECK(s.at("iterations") == total);
+  // The last samples of each chain (burn-in 0 with auto), oldest first, ending at the last iteration.
+  std::istringstream lines(slurp(out / "samples.jsonl"));
+  std::vector<nlohmann::json> samples;
+  for (std::string line; std::getline(lines, line);) samples.push_back(nlohmann::json::parse(line));
+  REQUIRE(samples.size() == 8);
+  const std::uint64_t last0 = s.at("chain_results")[0].at("iterations");
+  CHECK(samples[3].at("iteration") == last0);
+  CHECK(samples[0].at("iteration") == last0 - 30);
+
+  // Same seed, same stop (field by field: the seconds differ); a gain so large that every
+  // window counts as flat stops one window after the first judgement.
+  const Run again = run([&] { auto a = args; a.back() = (d.path / "again").string(); return a; }());
+  REQUIRE(again.code == 0);
+  const auto s2 = nlohmann::json::parse(slurp(d.path / "again" / "summary.json"));
+  for (std::size_t c = 0; c < 2; ++c) {
+    for (const char* k : {"iterations", "plateau_iteration", "best_iteration", "best_log_posterior"}) {
+      INFO(k);
+      CHECK(s2.at("chain_results")[c].at(k) == s.at("chain_results")[c].at(k));
+    }
+  }
+  const Run loose = run({in.string(), "--iterations", "auto", "--plateau-window", "500", "--plateau-gain", "1e9",
+                         "--out", (d.path / "loose").string(), "--quiet"});
+  REQUIRE(loose.code == 0);
+  const auto s3 = nlohmann::json::parse(slurp(d.path / "loose" / "summary.json"));
+  CHECK(s3.at("chain_results")[0].at("iterations") == 600);  // judged every 100: 100 + 500
+  CHECK(s3.at("until_plateau").at("min_gain_is") == "given (--plateau-gain)");
+}
+
+TEST_CASE("cli: --iterations auto warns when a chain reaches no plateau within --max-iterations") {
+  TempDir d("auto_cap");
+  const auto in = d.write("toy.json", R"({"n": 20, "start": 3})");
+  const Run r = run({in.string(), "--iterations", "auto", "--plateau-window", "5000", "--max-iterations", "3000",
+                     "--out", (d.path / "out").string(), "--quiet"});
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK(r.err.find("toy: warning: chain 0 reached no plateau within 3000 iterations") != std::string::npos);
+  const auto s = nlohmann::json::parse(slurp(d.path / "out" / "summary.json"));
+  CHECK(s.at("until_plateau").at("chains_reached") == 0);
+  CHECK(s.at("chain_results")[0].at("plateau_iteration").is_null());
+  CHECK(s.at("iterations") == 3000);
 }

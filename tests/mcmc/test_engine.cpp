@@ -235,3 +235,46 @@ TEST_CASE("engine rejects a kernel table that does not match the schedule") {
   CHECK_THROWS_AS(rm::Engine(toy_factory(), swapped, schedule), std::invalid_argument);
   CHECK_THROWS_AS(rm::Engine(toy_factory(), {}, rm::Schedule()), std::invalid_argument);
 }
+
+TEST_CASE("stop_at_plateau: each chain stops once its best stops gaining, whatever the threads") {
+  const auto engine = toy_engine();
+  auto cfg = base_config(4, 1);
+  cfg.iterations = 1000000;
+  cfg.burn_in = 0;
+  cfg.samples = 5;
+  cfg.thin = 10;
+  cfg.keep_last_samples = true;
+  cfg.stop_at_plateau = rm::PlateauCriterion{1000, 0.0};
+  const auto a = engine.run(cfg);
+  REQUIRE(a.chains.size() == 4);
+  for (const auto& c : a.chains) {
+    REQUIRE(c.plateau.has_value());
+    CHECK_FALSE(c.cancelled);
+    CHECK(c.iterations < cfg.iterations);
+    CHECK(c.iterations % cfg.plateau_every == 0);
+    CHECK(c.iterations == c.plateau->iteration + 1000);  // judged every 100, window a multiple of it
+    CHECK(c.best_iteration <= c.plateau->iteration);
+    CHECK(c.plateau->best == c.best_log_posterior);
+    REQUIRE(c.samples.size() == 5);  // the last five, oldest first
+    for (std::size_t s = 0; s < 5; ++s) CHECK(c.samples[s].iteration == c.iterations - 10 * (4 - s));
+  }
+  cfg.threads = 4;
+  const auto b = engine.run(cfg);
+  require_same(a, b);
+  for (std::size_t c = 0; c < 4; ++c) CHECK(a.chains[c].iterations == b.chains[c].iterations);
+}
+
+TEST_CASE("stop_at_plateau: no plateau within the iterations, and bad criteria") {
+  const auto engine = toy_engine();
+  auto cfg = base_config(1, 1);
+  cfg.iterations = 3000;
+  cfg.stop_at_plateau = rm::PlateauCriterion{5000, 0.0};
+  const auto r = engine.run(cfg);
+  CHECK_FALSE(r.chains[0].plateau.has_value());
+  CHECK(r.chains[0].iterations == 3000);
+  cfg.stop_at_plateau = rm::PlateauCriterion{0, 0.0};
+  CHECK_THROWS_AS(engine.run(cfg), std::invalid_argument);
+  cfg.stop_at_plateau = rm::PlateauCriterion{100, -1.0};
+  CHECK_THROWS_AS(engine.run(cfg), std::invalid_argument);
+}
+

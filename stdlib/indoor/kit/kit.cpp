@@ -287,6 +287,13 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
   setup.schedule = std::move(table.schedule);
   std::shared_ptr<const SharedInput> cshared = shared;
   setup.model_factory = [cshared](unsigned) { return std::make_unique<IndoorModel>(cshared); };
+  // --iterations auto (the default) stops a chain once its best world explains less than one
+  // more cell over the plateau window (docs/indoor_outputs.md, "How long a run is").
+  setup.plateau_gain = one_cell_gain(LikelihoodModel(plan.tables));
+  char gain_text[32];
+  std::snprintf(gain_text, sizeof gain_text, "%.4f", setup.plateau_gain);
+  setup.plateau_gain_what = std::string("one cell: the smallest log-likelihood gain of correcting one cell's "
+                                        "prediction under the domain's tables (") + gain_text + " nats)";
   if (map->image != map->source) setup.extra_inputs.push_back(map->image);
   if (plan.semantic)
     setup.evidence_db = [](mcmc::Model& best) {
@@ -346,6 +353,7 @@ cli::DomainSpec domain_spec(const blocks::Binding& b) {
       "posterior.png with --samples N, path.json with --path (docs/indoor_outputs.md)";
   spec.inputs_help = "MAP.(png|pgm|yaml)";
   spec.default_iterations = 10000;
+  spec.default_iterations_auto = true;
   using K = cli::DomainFlag::Kind;
   spec.flags = {
       {"resolution", "metres per cell (overrides the YAML / PGM comment; default 0.05 for bare images)", "", K::real},

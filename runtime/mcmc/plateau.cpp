@@ -1,12 +1,10 @@
-#include "stdlib/indoor/kit/plateau.h"
+#include "runtime/mcmc/plateau.h"
 
-#include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 #include <string>
 
-namespace ksmc::stdlib::indoor::kit {
+namespace ksmc::runtime::mcmc {
 
 PlateauDetector::PlateauDetector(PlateauCriterion c) : c_(c) {
   if (c_.window == 0) throw std::invalid_argument("PlateauDetector: window must be at least 1 iteration");
@@ -36,19 +34,4 @@ bool PlateauDetector::observe(std::uint64_t iteration, double best, double secon
   return false;
 }
 
-double one_cell_gain(const LikelihoodModel& lik) {
-  double gain = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < kMaxLutClasses; ++k)
-    for (int o = 0; o < 3; ++o) {
-      const auto obs = static_cast<Cell>(o);
-      double other = -std::numeric_limits<double>::infinity();
-      for (int x = 0; x < 3; ++x)
-        if (x != o) other = std::max(other, lik.log_p(k, obs, static_cast<Predicted>(x)));
-      gain = std::min(gain, lik.log_p(k, obs, static_cast<Predicted>(o)) - other);
-    }
-  if (!(gain > 0.0))
-    throw std::invalid_argument("one_cell_gain: some likelihood table does not favour the correct prediction of a cell");
-  return gain;
-}
-
-}  // namespace ksmc::stdlib::indoor::kit
+}  // namespace ksmc::runtime::mcmc

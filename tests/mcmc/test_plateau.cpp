@@ -1,15 +1,14 @@
-// The plateau criterion of bench_indoor_run: best(i + window) - best(i) <= min_gain.
+// The plateau criterion (runtime/mcmc/plateau.h): best(i + window) - best(i) <= min_gain.
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <stdexcept>
 
-#include "stdlib/indoor/kit/plateau.h"
+#include "runtime/mcmc/plateau.h"
 
-using namespace ksmc::stdlib::indoor;
-using namespace ksmc::stdlib::indoor::kit;
+using namespace ksmc::runtime::mcmc;
 
-TEST_CASE("plateau: strict criterion finds the first point with no gain over the window", "[indoor_kit]") {
+TEST_CASE("plateau: strict criterion finds the first point with no gain over the window", "[mcmc]") {
   PlateauDetector d({100, 0.0});
   // best rises until iteration 300, then stays flat.
   bool hit = false;
@@ -29,7 +28,7 @@ TEST_CASE("plateau: strict criterion finds the first point with no gain over the
   CHECK(d.plateau()->iteration == 300);
 }
 
-TEST_CASE("plateau: small gains count as none only up to min_gain", "[indoor_kit]") {
+TEST_CASE("plateau: small gains count as none only up to min_gain", "[mcmc]") {
   // Gains of 0.5 every 50 iterations: 1.0 per 100-iteration window.
   auto run = [](double min_gain) {
     PlateauDetector d({100, min_gain});
@@ -42,7 +41,7 @@ TEST_CASE("plateau: small gains count as none only up to min_gain", "[indoor_kit
   CHECK(run(1.0) == 50);  // the first point already qualifies
 }
 
-TEST_CASE("plateau: irregular spacing judges each point against the first at or after i + window", "[indoor_kit]") {
+TEST_CASE("plateau: irregular spacing judges each point against the first at or after i + window", "[mcmc]") {
   PlateauDetector d({100, 0.0});
   CHECK_FALSE(d.observe(1, 0.0, 0.0));
   CHECK_FALSE(d.observe(90, 5.0, 0.0));
@@ -53,7 +52,7 @@ TEST_CASE("plateau: irregular spacing judges each point against the first at or 
   CHECK(d.detected()->iteration == 260);
 }
 
-TEST_CASE("plateau: bad input is refused", "[indoor_kit]") {
+TEST_CASE("plateau: bad input is refused", "[mcmc]") {
   CHECK_THROWS_AS(PlateauDetector({0, 0.0}), std::invalid_argument);
   CHECK_THROWS_AS(PlateauDetector({10, -1.0}), std::invalid_argument);
   CHECK_THROWS_AS(PlateauDetector({10, NAN}), std::invalid_argument);
@@ -61,14 +60,4 @@ TEST_CASE("plateau: bad input is refused", "[indoor_kit]") {
   d.observe(5, 1.0, 0.0);
   CHECK_THROWS_AS(d.observe(5, 1.0, 0.0), std::invalid_argument);
   CHECK_THROWS_AS(d.observe(6, 0.5, 0.0), std::invalid_argument);
-}
-
-TEST_CASE("one_cell_gain: ln 8 for Table 3.1, the weakest table decides", "[indoor_kit]") {
-  CHECK(one_cell_gain(LikelihoodModel()) == Approx(std::log(8.0)));
-  LikelihoodTable soft = LikelihoodTable::table_3_1();
-  soft.p[0][2] = 0.4;  // predicted free, observed occupied: lenient
-  CHECK(one_cell_gain(LikelihoodModel({LikelihoodTable::table_3_1(), soft})) == Approx(std::log(0.8 / 0.4)));
-  LikelihoodTable flat = LikelihoodTable::table_3_1();
-  flat.p[1][1] = 0.1;
-  CHECK_THROWS_AS(one_cell_gain(LikelihoodModel({flat})), std::invalid_argument);
 }

@@ -4,22 +4,22 @@
 //     best(i + window) - best(i) <= min_gain.
 // min_gain = 0 is the strict reading ("no gain over `window` iterations"). A positive min_gain
 // ignores gains smaller than a stated unit, e.g. one_cell_gain(): the smallest change of
-// log p(D|W) that corrects the prediction of a single cell, so that a plateau means "over
-// `window` iterations, the best world explained less than one more cell".
+// log p(D|W) that corrects the prediction of a single cell (stdlib/indoor/likelihood.h), so
+// that a plateau means "over `window` iterations, the best world explained less than one more
+// cell".
 //
 // The detector is fed (iteration, best so far, wall seconds) in increasing iteration order, at
 // any spacing (every iteration, or every trace row). Each fed point i is judged against the
 // first point fed at or after i + window, so with a spacing of s iterations the plateau
-// iteration is exact up to s. Nothing here depends on the indoor model.
+// iteration is exact up to s. The engine (engine.h, EngineConfig::stop_at_plateau) feeds one
+// detector per chain; bench/indoor/bench_indoor_run feeds two.
 #pragma once
 
 #include <cstdint>
 #include <deque>
 #include <optional>
 
-#include "stdlib/indoor/likelihood.h"
-
-namespace ksmc::stdlib::indoor::kit {
+namespace ksmc::runtime::mcmc {
 
 struct PlateauCriterion {
   std::uint64_t window = 5000;  // iterations
@@ -54,10 +54,5 @@ class PlateauDetector {
   std::optional<PlateauPoint> last_, plateau_, detected_;
 };
 
-// The smallest gain in log p(D|W) from correcting one cell under `lik`: over the observed
-// classes o and likelihood classes k, log p_k(o|o) - max_{x != o} log p_k(o|x) (predicted x,
-// observed o; Free/Unknown/Wall against Free/Unknown/Occupied). ln 8 = 2.079 for Table 3.1.
-// Throws std::invalid_argument if no table rewards the correct prediction (result <= 0).
-double one_cell_gain(const LikelihoodModel& lik);
 
-}  // namespace ksmc::stdlib::indoor::kit
+}  // namespace ksmc::runtime::mcmc
