@@ -111,6 +111,13 @@ Counts check_counts(const CommonFlags& cf, const PlateauFlagsGiven& given) {
   return c;
 }
 
+// The iterations a chain is expected to run: the count, or with auto 20 plateau windows (lab_b's
+// plateau is known after 10-20), at most the cap. For work estimates and the trace spacing.
+std::uint64_t expected_iterations(const Counts& c) {
+  if (!c.iterations_auto) return c.iterations;
+  return c.plateau_window > c.iterations / 20 ? c.iterations : 20 * c.plateau_window;
+}
+
 // Holds the domain flag values while CLI11 parses (std::map: stable addresses).
 struct DomainFlagStorage {
   std::map<std::string, std::string> text;
@@ -343,9 +350,7 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
   input.seed = counts.seed;
   input.chains = counts.chains;
   input.threads = counts.threads;
-  // With auto, estimates assume 20 plateau windows (lab_b's plateau comes at 10-20).
-  input.iterations = counts.iterations_auto ? std::min(counts.iterations, 20 * counts.plateau_window) : counts.iterations;
-  input.iterations_auto = counts.iterations_auto;
+  input.iterations = expected_iterations(counts);
   input.max_memory_mb = counts.max_memory_mb;
   input.quiet = cf.quiet;
   input.out_dir = cf.out;
@@ -393,8 +398,8 @@ int run_domain_main(int argc, const char* const* argv, const DomainSpec& spec, c
   }
   if (counts.trace_every != 0) cf.trace = true;  // --trace-every implies --trace
   if (cf.trace) {
-    const std::uint64_t span = counts.iterations_auto ? counts.plateau_window * 20 : counts.iterations;
-    cfg.trace_every = counts.trace_every != 0 ? counts.trace_every : std::max<std::uint64_t>(1, span / 1000);
+    cfg.trace_every =
+        counts.trace_every != 0 ? counts.trace_every : std::max<std::uint64_t>(1, expected_iterations(counts) / 1000);
   }
   ProgressPrinter printer(io.err, io.tty);
   if (!cf.quiet) cfg.progress = [&printer](const mcmc::Progress& p) { printer(p); };

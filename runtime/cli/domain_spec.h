@@ -80,8 +80,7 @@ struct DomainInput {
   std::uint64_t seed = 1;
   unsigned chains = 1;
   unsigned threads = 0;            // --threads (0 = one per core)
-  std::uint64_t iterations = 0;    // per chain; with --iterations auto, the expected count (estimates)
-  bool iterations_auto = false;    // --iterations auto: each chain runs until its plateau
+  std::uint64_t iterations = 0;    // per chain; with --iterations auto the expected count (for estimates)
   std::uint64_t max_memory_mb = kDefaultMaxMemoryMb;  // --max-memory-mb: kits refuse estimates above it
   bool quiet = false;              // --quiet: no estimate line, no progress
   std::filesystem::path out_dir;
