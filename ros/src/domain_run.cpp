@@ -15,7 +15,7 @@ RunOutcome run_spec(const runtime::cli::DomainSpec& spec, const std::vector<std:
   std::vector<std::string> args = {spec.name};
   args.insert(args.end(), inputs.begin(), inputs.end());
   for (const std::string& a : {std::string("--out"), out_dir.string(), std::string("--seed"), std::to_string(s.seed),
-                               std::string("--iterations"), std::to_string(s.iterations), std::string("--chains"),
+                               std::string("--iterations"), s.iterations == 0 ? std::string("auto") : std::to_string(s.iterations), std::string("--chains"),
                                std::to_string(s.chains), std::string("--quiet")})
     args.push_back(a);
   args.insert(args.end(), s.extra_args.begin(), s.extra_args.end());

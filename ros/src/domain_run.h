@@ -21,7 +21,7 @@ inline bool interrupted(int exit_code) {
 }
 
 struct RunSettings {
-  long long iterations = 5000;
+  long long iterations = 5000;  // 0 = --iterations auto (until the plateau)
   long long seed = 1;
   int chains = 1;
   std::vector<std::string> extra_args;  // further domain flags, e.g. {"--source-refresh", "100"}

@@ -6,12 +6,13 @@
 //   ~segmentation       nav_msgs/OccupancyGrid: cell = unit id % 100, -1 = no unit
 //   ~segmentation_ids   std_msgs/String: JSON side table of the segmentation's ids
 //   ~scene_graph        std_msgs/String: JSON units / doors / adjacency in metres
-// Parameters (private): ~iterations (5000), ~seed (1), ~chains (1), ~occupied_thresh (0.65),
+// Parameters (private): ~iterations (5000; 0 = until the plateau, --iterations auto), ~seed (1), ~chains (1), ~occupied_thresh (0.65),
 //   ~free_thresh (0.196), ~extra_args ("", further indoor flags), ~output_root ("": a temp
 //   folder per map, removed after publishing; else <root>/map_<n> is kept, report.html included).
 // Maps arriving during a run are not queued: the newest one is run next.
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include <nav_msgs/OccupancyGrid.h>
 #include <ros/ros.h>
@@ -38,8 +39,9 @@ void process(const nav_msgs::OccupancyGrid& map, const rn::RunSettings& run,
   const std::filesystem::path out = output_root.empty() ? work / "out" : std::filesystem::path(output_root) / ("map_" + std::to_string(count));
   try {
     const auto yaml = ri::write_map_files(map, work, "map", th);
-    ROS_INFO("ksmc: map %u (%ux%u, %.3f m/cell): running indoor, %lld iterations", count, map.info.width, map.info.height,
-             static_cast<double>(map.info.resolution), run.iterations);
+    const std::string length = run.iterations == 0 ? "until the plateau" : std::to_string(run.iterations) + " iterations";
+    ROS_INFO("ksmc: map %u (%ux%u, %.3f m/cell): running indoor, %s", count, map.info.width, map.info.height,
+             static_cast<double>(map.info.resolution), length.c_str());
     const rn::RunOutcome r = rn::run_indoor(yaml, out, run);
     if (rn::interrupted(r.exit_code)) {
       ROS_WARN("ksmc: map %u: run interrupted (exit %d)%s%s; shutting down", count, r.exit_code,

@@ -12,8 +12,8 @@ bool read_node_params(const ros::NodeHandle& pnh, int default_iterations, NodePa
   pnh.param("chains", chains, chains);
   pnh.param("extra_args", extra, std::string());
   pnh.param("output_root", out.output_root, std::string());
-  if (iterations <= 0 || chains <= 0 || seed < 0) {
-    ROS_FATAL("ksmc: bad parameters: need ~iterations > 0, ~chains > 0, ~seed >= 0");
+  if (iterations < 0 || chains <= 0 || seed < 0) {
+    ROS_FATAL("ksmc: bad parameters: need ~iterations >= 0 (0: until the plateau), ~chains > 0, ~seed >= 0");
     return false;
   }
   out.run.iterations = iterations;

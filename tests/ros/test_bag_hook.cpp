@@ -38,6 +38,15 @@ TEST_CASE("a map read back from a bag runs like the original map files", "[ros]"
   const rn::RunOutcome from_files = rn::run_indoor(yaml, dir / "from_files", s);
   INFO(from_bag.messages << from_files.messages);
   REQUIRE(from_bag.exit_code == 0);
+  {
+    rn::RunSettings until_plateau;  // iterations 0: --iterations auto
+    until_plateau.iterations = 0;
+    const rn::RunOutcome r = rn::run_indoor(yaml, dir / "until_plateau", until_plateau);
+    INFO(r.messages);
+    REQUIRE(r.exit_code == 0);
+    const auto summary = read_json(dir / "until_plateau" / "summary.json");
+    CHECK(summary.at("until_plateau").at("chains_reached") == 1);
+  }
   REQUIRE(from_files.exit_code == 0);
   const auto a = read_json(dir / "from_bag" / "world.json");
   const auto b = read_json(dir / "from_files" / "world.json");
