@@ -77,6 +77,9 @@ def main():
     for id_ in ["summary-table", "kernel-table", "marginals"]:
         has(id_)
     d = a.out_dir
+    s = json.load(open(os.path.join(d, "summary.json")))
+    length = "until the plateau" if s.get("until_plateau") else "fixed: %d per chain" % s["iterations_per_chain"]
+    check(length in dom, "summary table gives the run's length: '%s'" % length)
     if os.path.exists(os.path.join(d, "trace.csv")):
         has("trace-logpost")
         has("trace-acceptance")

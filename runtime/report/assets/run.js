@@ -11,6 +11,7 @@ K.drawSummary = function (data) {
     ["domain", (dom.name || "?") + " " + (dom.version || "")],
     ["inputs", inputs || "-"],
     ["seed", s.seed], ["chains", s.chains], ["iterations", s.iterations],
+    ["length", K.runLength(s)],
     ["burn-in", s.burn_in], ["seconds", s.seconds], ["iterations / s", s.iterations_per_second],
     ["acceptance rate", s.acceptance_rate],
     ["best log posterior", best.log_posterior],
@@ -23,6 +24,18 @@ K.drawSummary = function (data) {
     sec.appendChild(K.table("kernel-table", ["kernel", "reverse", "selected", "accepted", "declined", "rejected", "acceptance"],
       kernels.map(function (k) { return [k.name, k.reverse, k.selected, k.accepted, k.declined, k.rejected, K.probCell(k.acceptance_rate)]; })));
   }
+};
+
+// "fixed: N per chain", or with --iterations auto where each chain's plateau began.
+K.runLength = function (s) {
+  var u = s.until_plateau;
+  if (!u) return "fixed: " + s.iterations_per_chain + " per chain";
+  var at = (s.chain_results || []).map(function (c) {
+    return c.plateau_iteration === null || c.plateau_iteration === undefined ? "none" : c.plateau_iteration;
+  }).join(", ");
+  return "until the plateau (gain at most " + Number(u.min_gain).toFixed(3) + " nats over " + u.window +
+    " iterations; at most " + s.iterations_per_chain + "): reached by " + u.chains_reached + " of " + s.chains +
+    " chains, from iteration " + at;
 };
 
 K.drawTrace = function (data) {
