@@ -54,5 +54,4 @@ class PlateauDetector {
   std::optional<PlateauPoint> last_, plateau_, detected_;
 };
 
-
 }  // namespace ksmc::runtime::mcmc

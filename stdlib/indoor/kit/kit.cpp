@@ -10,6 +10,7 @@
 #include <optional>
 #include <utility>
 #include <sstream>
+#include <stdexcept>
 #include <thread>
 
 #include "runtime/cli/work_estimate.h"
@@ -289,11 +290,17 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
   setup.model_factory = [cshared](unsigned) { return std::make_unique<IndoorModel>(cshared); };
   // --iterations auto (the default) stops a chain once its best world explains less than one
   // more cell over the plateau window (docs/indoor_outputs.md, "How long a run is").
-  setup.plateau_gain = one_cell_gain(LikelihoodModel(plan.tables));
-  char gain_text[32];
-  std::snprintf(gain_text, sizeof gain_text, "%.4f", setup.plateau_gain);
-  setup.plateau_gain_what = std::string("one cell: the smallest log-likelihood gain of correcting one cell's "
-                                        "prediction under the domain's tables (") + gain_text + " nats)";
+  // A domain whose tables do not reward some correct prediction has no such unit: strict.
+  try {
+    setup.plateau_gain = one_cell_gain(LikelihoodModel(plan.tables));
+    char gain_text[32];
+    std::snprintf(gain_text, sizeof gain_text, "%.4f", setup.plateau_gain);
+    setup.plateau_gain_what = std::string("one cell: the smallest log-likelihood gain of correcting one cell's "
+                                          "prediction under the domain's tables (") + gain_text + " nats)";
+  } catch (const std::invalid_argument&) {
+    setup.plateau_gain = 0.0;
+    setup.plateau_gain_what = "strict: a likelihood table of the domain does not reward every correct prediction";
+  }
   if (map->image != map->source) setup.extra_inputs.push_back(map->image);
   if (plan.semantic)
     setup.evidence_db = [](mcmc::Model& best) {
