@@ -280,3 +280,52 @@ TEST_CASE("segmentation: two units in one open room are one segment, unless a wa
   CHECK(s(40, 40) == 3);
   CHECK(s(40, 200) == 8);
 }
+
+namespace {
+
+// An L-shaped corridor `width` cells wide: a leg along the top (rows 1..width, cols 1..cols)
+// and a leg down the left (cols 1..width, rows 1..rows); walls around it.
+ClassGrid l_corridor(int width, int rows, int cols) {
+  ClassGrid g(rows + 2, cols + 2, static_cast<std::uint8_t>(Cell::Occupied));
+  for (int r = 1; r <= rows; ++r)
+    for (int c = 1; c <= cols; ++c)
+      if (r <= width || c <= width) g(r, c) = static_cast<std::uint8_t>(Cell::Free);
+  return g;
+}
+
+// The L's two legs as units: the top one from the corner's far side on, the left one whole.
+WorldResult l_units(int width, int rows, int cols) {
+  WorldResult w;
+  w.map.resolution = 0.05;
+  const double e = width + 0.5;
+  w.units = {unit(4, e, 0.5, cols + 0.5, e), unit(9, 0.5, 0.5, e, rows + 0.5)};
+  return w;
+}
+
+}  // namespace
+
+TEST_CASE("segmentation: a corridor in pieces meeting end to side is one segment, a door keeps them apart") {
+  // 1.8 m wide legs of 15 m and 12 m (27 and 21.6 m^2, both over the 20 m^2 of a room's piece):
+  // they meet over 1.8 m, under the 2 m that joins two pieces of an open room, and no cell of
+  // the contact is 0.6 m from a wall. A corridor continues: one segment.
+  ClassGrid g = l_corridor(36, 240, 300);
+  const WorldResult w = l_units(36, 240, 300);
+  cv::Mat1w s = render_segmentation(g, w);
+  CHECK(s(18, 200) == 4);
+  CHECK(s(200, 18) == 4);
+  // A wall across the corner with a 1 m door (rows 9-28): two segments.
+  for (int r = 1; r <= 36; ++r)
+    if (r < 9 || r > 28) g(r, 37) = static_cast<std::uint8_t>(Cell::Occupied);
+  s = render_segmentation(g, w);
+  CHECK(s(18, 200) == 4);
+  CHECK(s(200, 18) == 9);
+  // A wide corridor (3.5 m, legs of 15 m: Table 3.6's corridor, 4 times as long as wide) too.
+  s = render_segmentation(l_corridor(70, 300, 300), l_units(70, 300, 300));
+  CHECK(s(35, 250) == 4);
+  CHECK(s(250, 35) == 4);
+  // Two rooms, 3.5 m x 6 m and 3.5 m x 9.5 m, meeting the same way over 3.5 m: under 3 times
+  // as long as wide, so not a corridor, and each over 20 m^2: they stay two segments.
+  s = render_segmentation(l_corridor(70, 190, 190), l_units(70, 190, 190));
+  CHECK(s(35, 150) == 4);
+  CHECK(s(150, 35) == 9);
+}

@@ -125,12 +125,34 @@ void label_unreached_components(const ClassGrid& grid, double resolution, cv::Ma
 //   * the smaller of the two is under kMaxJoinedPiece: a piece of a room (a sliver along its
 //     edge, one end of a corridor), not a room of its own; without it a corridor unit swallows
 //     the offices whose units reach into it (office_h: corridor and 10 offices one segment).
+// A corridor continues: two narrow units (both under kNarrowUnit across) whose free contact
+// spans more than kEndShare of the narrower one's width, and more than a door (kDoorWidth), are
+// one space whatever their size, when the wall runs between them are at most kWallShare of the
+// contact (the `@one_space` rule's 3/4 of the join for a corridor cut across). A corridor in a
+// ring or an L is several rectangles meeting end to side; its contact is the corridor's width,
+// under 2 m, and too close to the walls for open_core (office_a: a ring in 6 pieces).
 // Pairs are joined widest contact first. split_at_wall_gaps runs afterwards and cuts again
 // where a straight wall line with a gap crosses a joined segment.
 constexpr double kOpenJoin = 2.0;           // m of free contact
 constexpr double kOpenCore = 0.5;           // m of contact in open_core, for two units
 constexpr double kWallShare = 0.25;         // wall runs / free contact pairs, for two units
 constexpr double kMaxJoinedPiece = 20.0;    // m^2, for two units
+constexpr double kNarrowUnit = 2.6;         // m across: a corridor (`Narrow` in domains/indoor.ksm)
+constexpr double kEndShare = 0.75;          // of the narrower unit's width, for two narrow units
+constexpr double kDoorWidth = 1.2;          // m: a contact no wider is a doorway
+
+constexpr double kLongUnit = 4.0;           // m across, at least kLongRatio times as long: a corridor
+constexpr double kLongRatio = 3.0;          // (Table 3.6's corridor: geom.corridor_like)
+
+// The width of a corridor-shaped unit in cells: its shorter side when it is under kNarrowUnit,
+// or under kLongUnit and kLongRatio times as long; infinity otherwise (and for a degenerate quad).
+double corridor_width(const Quad& q, double res) {
+  constexpr double kNot = std::numeric_limits<double>::infinity();
+  if (!finite_quad(q)) return kNot;
+  const double a = std::hypot(q[1].x - q[0].x, q[1].y - q[0].y), b = std::hypot(q[2].x - q[1].x, q[2].y - q[1].y);
+  const double w = std::min(a, b) * res, l = std::max(a, b) * res;
+  return w < kNarrowUnit || (w < kLongUnit && l >= kLongRatio * w) ? std::min(a, b) : kNot;
+}
 
 using PairCount = std::map<std::pair<int, int>, long>;  // (smaller, larger id) -> count
 
@@ -179,8 +201,24 @@ void merge_open_spaces(const ClassGrid& grid, const WorldResult& w, cv::Mat1w& l
   std::map<int, long> area;
   for (int r = 0; r < label.rows; ++r)
     for (int c = 0; c < label.cols; ++c) ++area[label(r, c)];
+  std::map<int, double> width;  // unit id -> shorter side, in cells
+  for (const auto& u : w.units) width[u.id] = corridor_width(u.corners, res);
+  const auto narrow_end_join = [&](const std::pair<int, int>& ab, long n) {
+    const auto wa = width.find(ab.first), wb = width.find(ab.second);
+    if (wa == width.end() || wb == width.end()) return false;
+    const double narrower = std::min(wa->second, wb->second) * res;
+    if (!std::isfinite(wa->second) || !std::isfinite(wb->second)) return false;
+    const double run = static_cast<double>(n) * res;
+    if (run <= kDoorWidth || run <= kEndShare * narrower) return false;
+    const auto wc = walls.find(ab);
+    return wc == walls.end() || static_cast<double>(wc->second) <= kWallShare * static_cast<double>(n);
+  };
   std::vector<std::pair<long, std::pair<int, int>>> joins;
   for (const auto& [ab, n] : contact) {
+    if (ab.second <= max_unit && narrow_end_join(ab, n)) {
+      joins.push_back({n, ab});
+      continue;
+    }
     if (static_cast<double>(n) * res <= kOpenJoin) continue;
     if (ab.second <= max_unit) {  // two units
       if (static_cast<double>(std::min(area[ab.first], area[ab.second])) * res * res >= kMaxJoinedPiece) continue;

@@ -31,7 +31,10 @@
 //     0.5 m of that contact lies over 0.6 m from every wall, the wall runs (at most 0.4 m
 //     thick) between them are at most a quarter of the contact, and the smaller is under
 //     20 m^2: a sliver or a corridor piece, not a room beside a wide opening. Widest contact
-//     first;
+//     first. A corridor continues: two corridor-shaped units (under 2.6 m across, or under
+//     4 m and 3 times as long) are joined whatever their size when their free contact exceeds
+//     1.2 m and 3/4 of the narrower one's width, with the same limit on the walls between
+//     them: a ring or an L of corridor pieces meets over the corridor's width;
 //   * a segment that a straight wall line with a gap (at most 3 m) crosses is two spaces: an
 //     office open to its corridor over 2-3 m between wall stubs gets its own id; thin
 //     partitions at any angle cut at the gaps between their pieces and at the doorway (up to
