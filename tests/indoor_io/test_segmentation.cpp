@@ -329,3 +329,26 @@ TEST_CASE("segmentation: a corridor in pieces meeting end to side is one segment
   CHECK(s(35, 150) == 4);
   CHECK(s(150, 35) == 9);
 }
+
+TEST_CASE("segmentation: chairs round a table are no wall line") {
+  // One room 8 m x 6 m (rows 1-120, cols 1-160). Chairs 0.3 m square every 0.5 m on a ring
+  // round a table 5.5 m x 3.5 m (rows 25-100, cols 25-140): 0.2 m gaps between them, each gap a
+  // free run between two occupied runs 0.3 m long and 0.3 m thick, as between two wall stubs. A
+  // chair's blob spans under 1 m, so no gap is a cut: the floor under the table stays the
+  // room's. (Wall stubs that are part of a wall do cut: "a unit over offices open to a corridor
+  // is cut along the wall-stub line".)
+  ClassGrid g = walled_room(120, 160);
+  const auto chair = [&g](int r0, int c0) {
+    for (int r = r0; r < r0 + 6; ++r)
+      for (int c = c0; c < c0 + 6; ++c) g(r, c) = static_cast<std::uint8_t>(Cell::Occupied);
+  };
+  for (int c = 25; c <= 135; c += 10) chair(25, c), chair(95, c);
+  for (int r = 35; r <= 85; r += 10) chair(r, 25), chair(r, 135);
+  WorldResult w;
+  w.map.resolution = 0.05;
+  w.units = {unit(2, 0.5, 0.5, 160.5, 120.5)};
+  const cv::Mat1w s = render_segmentation(g, w);
+  CHECK(s(60, 80) == 2);
+  CHECK(s(10, 10) == 2);
+  CHECK(s(110, 150) == 2);
+}

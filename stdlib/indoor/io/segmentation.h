@@ -36,7 +36,8 @@
 //     1.2 m and 3/4 of the narrower one's width, with the same limit on the walls between
 //     them: a ring or an L of corridor pieces meets over the corridor's width;
 //   * a segment that a straight wall line with a gap (at most 3 m) crosses is two spaces: an
-//     office open to its corridor over 2-3 m between wall stubs gets its own id; thin
+//     office open to its corridor over 2-3 m between wall stubs gets its own id (the stubs'
+//     blobs span at least 1 m: chairs in a row round a table are no wall line); thin
 //     partitions at any angle cut at the gaps between their pieces and at the doorway (up to
 //     1.4 m) beyond a free end (split_at_wall_gaps, wall_gap_cuts.h, thin_walls.h);
 //   * an occupied 8-connected blob of at most 4 m^2, off the map's edge, whose 4-neighbours are

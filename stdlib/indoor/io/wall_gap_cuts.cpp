@@ -7,6 +7,8 @@
 #include <map>
 #include <vector>
 
+#include <opencv2/imgproc.hpp>
+
 #include "stdlib/indoor/cell.h"
 #include "stdlib/indoor/io/thin_walls.h"
 
@@ -17,6 +19,7 @@ namespace {
 constexpr double kMaxGap = 3.0;            // m: an open office front (a door is up to 1.2 m)
 constexpr double kWallRun = 0.3;           // m of wall beyond each end, along the gap's line
 constexpr double kMinPiece = 1.0;          // m^2: a piece that is a space of its own
+constexpr double kMinWallPiece = 1.0;      // m: the longer side of the bounding box of a wall end's occupied blob
 constexpr double kMaxEndGap = 1.4;         // m from a thin wall's end to the wall it points at: a door (1.2 m) and the Hough end's slack, under a corridor's width
 
 struct Cuts {
@@ -24,6 +27,9 @@ struct Cuts {
   const cv::Mat1w& label;
   int run, thick, max_gap;
   cv::Mat1b cut;
+  // Per cell, whether its occupied 8-connected blob spans at least kMinWallPiece: part of a wall,
+  // not a chair or a table leg (a row of them round a table is no wall line with gaps).
+  cv::Mat1b wall_piece;
 
   bool occupied(int r, int c) const {
     return r >= 0 && c >= 0 && r < grid.rows && c < grid.cols && grid(r, c) == static_cast<std::uint8_t>(Cell::Occupied);
@@ -62,7 +68,8 @@ struct Cuts {
         // The free run [i, j) and the cells at its two ends.
         const auto [r0, c0] = at(i - 1 < 0 ? 0 : i - 1);
         const auto [r1, c1] = at(j < len ? j : len - 1);
-        if (labelled && i > 0 && j < len && j - i <= max_gap && wall_along(r0, c0, -dr, -dc) && wall_along(r1, c1, dr, dc))
+        if (labelled && i > 0 && j < len && j - i <= max_gap && wall_piece(r0, c0) && wall_piece(r1, c1) &&
+            wall_along(r0, c0, -dr, -dc) && wall_along(r1, c1, dr, dc))
           for (int k = i; k < j; ++k) {
             const auto [rk, ck] = at(k);
             cut(rk, ck) = 1;
@@ -163,13 +170,30 @@ struct Cuts {
   }
 };
 
+// 255 where an occupied cell's 8-connected blob has a bounding box at least `min_cells` long.
+cv::Mat1b wall_pieces(const ClassGrid& grid, double min_cells) {
+  const cv::Mat1b occ = grid == static_cast<std::uint8_t>(Cell::Occupied);
+  cv::Mat1i ids, stats;
+  cv::Mat centroids;
+  const int n = cv::connectedComponentsWithStats(occ, ids, stats, centroids, 8, CV_32S);
+  std::vector<char> big(static_cast<std::size_t>(n), 0);
+  for (int k = 1; k < n; ++k)
+    big[static_cast<std::size_t>(k)] = std::max(stats(k, cv::CC_STAT_WIDTH), stats(k, cv::CC_STAT_HEIGHT)) >= min_cells;
+  cv::Mat1b out(grid.rows, grid.cols, static_cast<std::uint8_t>(0));
+  for (int r = 0; r < grid.rows; ++r)
+    for (int c = 0; c < grid.cols; ++c)
+      if (big[static_cast<std::size_t>(ids(r, c))]) out(r, c) = 255;
+  return out;
+}
+
 }  // namespace
 
 void split_at_wall_gaps(const ClassGrid& grid, double resolution, cv::Mat1w& label) {
   const double res = resolution > 0.0 ? resolution : 0.05;
   Cuts cuts{grid, label, std::max(1, static_cast<int>(std::lround(kWallRun / res))),
             std::max(1, static_cast<int>(std::lround(kMaxWallThickness / res))),
-            static_cast<int>(std::lround(kMaxGap / res)), cv::Mat1b(grid.rows, grid.cols, static_cast<std::uint8_t>(0))};
+            static_cast<int>(std::lround(kMaxGap / res)), cv::Mat1b(grid.rows, grid.cols, static_cast<std::uint8_t>(0)),
+            wall_pieces(grid, kMinWallPiece / res)};
   cuts.scan(0, 1);
   cuts.scan(1, 0);
   cuts.cut_lines(thin_wall_lines(grid, res), kMaxEndGap / res, 1.0 / res);

@@ -8,8 +8,10 @@
 // Rule, per row and per column of the map: a run of free, labelled cells at most kMaxGap long
 // whose two ends are wall cells where a wall continues straight on along the run's line (at
 // least kWallRun of occupied cells beyond each end, and that wall at most kMaxWallThickness
-// thick across the line) is a gap in a wall line, a cut. A wall crossed across its thickness,
-// a thick block, or furniture that does not line up on both ends gives no cut. The cells of a
+// thick across the line) is a gap in a wall line, a cut, when the occupied blob (8-connected)
+// at each end spans at least kMinWallPiece (1 m): part of a wall, not a chair. A wall crossed
+// across its thickness, a thick block, furniture that does not line up on both ends, or a row
+// of chairs round a table gives no cut. The cells of a
 // segment minus its cut cells fall into 4-connected pieces; when two or more pieces are at
 // least kMinPiece large, the largest keeps the segment's id, each other one gets a new id
 // (above every id in use), and the cut cells and small pieces go to the nearest large piece of
