@@ -125,12 +125,13 @@ void label_unreached_components(const ClassGrid& grid, double resolution, cv::Ma
 //   * the smaller of the two is under kMaxJoinedPiece: a piece of a room (a sliver along its
 //     edge, one end of a corridor), not a room of its own; without it a corridor unit swallows
 //     the offices whose units reach into it (office_h: corridor and 10 offices one segment).
-// A corridor continues: two narrow units (both under kNarrowUnit across) whose free contact
-// spans more than kEndShare of the narrower one's width, and more than a door (kDoorWidth), are
-// one space whatever their size, when the wall runs between them are at most kWallShare of the
-// contact (the `@one_space` rule's 3/4 of the join for a corridor cut across). A corridor in a
-// ring or an L is several rectangles meeting end to side; its contact is the corridor's width,
-// under 2 m, and too close to the walls for open_core (office_a: a ring in 6 pieces).
+// A corridor continues: two corridor-shaped units (each under kNarrowUnit across, or under
+// kLongUnit and kLongRatio times as long) whose free contact spans more than kEndShare of the
+// narrower one's width, and more than a door (kDoorWidth), are one space whatever their size,
+// when the wall runs between them are at most kWallShare of the contact (the `@one_space`
+// rule's 3/4 of the join for a corridor cut across). A corridor in a ring or an L is several
+// rectangles meeting end to side; its contact is the corridor's width, often under 2 m, and too
+// close to the walls for open_core (office_a: a ring in 6 pieces).
 // Pairs are joined widest contact first. split_at_wall_gaps runs afterwards and cuts again
 // where a straight wall line with a gap crosses a joined segment.
 constexpr double kOpenJoin = 2.0;           // m of free contact
@@ -201,13 +202,13 @@ void merge_open_spaces(const ClassGrid& grid, const WorldResult& w, cv::Mat1w& l
   std::map<int, long> area;
   for (int r = 0; r < label.rows; ++r)
     for (int c = 0; c < label.cols; ++c) ++area[label(r, c)];
-  std::map<int, double> width;  // unit id -> shorter side, in cells
+  std::map<int, double> width;  // unit id -> corridor_width (infinity: not corridor-shaped)
   for (const auto& u : w.units) width[u.id] = corridor_width(u.corners, res);
-  const auto narrow_end_join = [&](const std::pair<int, int>& ab, long n) {
+  const auto corridor_join = [&](const std::pair<int, int>& ab, long n) {
     const auto wa = width.find(ab.first), wb = width.find(ab.second);
     if (wa == width.end() || wb == width.end()) return false;
-    const double narrower = std::min(wa->second, wb->second) * res;
     if (!std::isfinite(wa->second) || !std::isfinite(wb->second)) return false;
+    const double narrower = std::min(wa->second, wb->second) * res;
     const double run = static_cast<double>(n) * res;
     if (run <= kDoorWidth || run <= kEndShare * narrower) return false;
     const auto wc = walls.find(ab);
@@ -215,7 +216,7 @@ void merge_open_spaces(const ClassGrid& grid, const WorldResult& w, cv::Mat1w& l
   };
   std::vector<std::pair<long, std::pair<int, int>>> joins;
   for (const auto& [ab, n] : contact) {
-    if (ab.second <= max_unit && narrow_end_join(ab, n)) {
+    if (ab.second <= max_unit && corridor_join(ab, n)) {
       joins.push_back({n, ab});
       continue;
     }
