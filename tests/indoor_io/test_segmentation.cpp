@@ -319,10 +319,11 @@ TEST_CASE("segmentation: a corridor in pieces meeting end to side is one segment
   s = render_segmentation(g, w);
   CHECK(s(18, 200) == 4);
   CHECK(s(200, 18) == 9);
-  // A wide corridor (3.5 m, legs of 15 m: Table 3.6's corridor, 4 times as long as wide) too.
+  // A wide corridor (3.5 m, legs of 15 m: Table 3.6's corridor, 4 times as long as wide) too; it
+  // keeps the id of the larger leg (unit 9, 3.5 m x 15 m against 3.5 m x 11.5 m).
   s = render_segmentation(l_corridor(70, 300, 300), l_units(70, 300, 300));
-  CHECK(s(35, 250) == 4);
-  CHECK(s(250, 35) == 4);
+  CHECK(s(35, 250) == 9);
+  CHECK(s(250, 35) == 9);
   // Two rooms, 3.5 m x 6 m and 3.5 m x 9.5 m, meeting the same way over 3.5 m: under 3 times
   // as long as wide, so not a corridor, and each over 20 m^2: they stay two segments.
   s = render_segmentation(l_corridor(70, 190, 190), l_units(70, 190, 190));
@@ -351,4 +352,33 @@ TEST_CASE("segmentation: chairs round a table are no wall line") {
   CHECK(s(60, 80) == 2);
   CHECK(s(10, 10) == 2);
   CHECK(s(110, 150) == 2);
+}
+
+TEST_CASE("segmentation: a joined segment keeps the id of its main type, a piece cut off again its own id") {
+  // A straight corridor 2 m x 30 m in three units: a Room 12 m long and two Corr 9 m long. They
+  // are one space; the Corr units cover most of it, so it keeps the id (and the type) of a Corr
+  // unit: the larger, here the smaller id of two equal ones.
+  WorldResult w;
+  w.map.resolution = 0.05;
+  w.units = {unit(3, 0.5, 0.5, 240.5, 40.5), unit(5, 240.5, 0.5, 420.5, 40.5), unit(7, 420.5, 0.5, 600.5, 40.5)};
+  w.units[0].type = "Room";
+  w.units[1].type = w.units[2].type = "Corr";
+  cv::Mat1w s = render_segmentation(walled_room(40, 600), w);
+  CHECK(s(20, 100) == 5);
+  CHECK(s(20, 300) == 5);
+  CHECK(s(20, 500) == 5);
+  // A corridor 3 m x 24 m in two units, with a door frame across it at cols 240-243 (stubs 0.3 m
+  // from each side wall, a 2.4 m opening). The join makes them one segment, and the wall-line
+  // cut at the frame splits it again: the larger piece keeps the joined id (unit 4), the other
+  // piece gets its own unit's id back (9), not a new id without a unit.
+  ClassGrid g = walled_room(60, 480);
+  for (int r = 1; r <= 60; ++r)
+    if (r <= 6 || r >= 55)
+      for (int c = 240; c <= 243; ++c) g(r, c) = static_cast<std::uint8_t>(Cell::Occupied);
+  WorldResult two;
+  two.map.resolution = 0.05;
+  two.units = {unit(4, 0.5, 0.5, 241.5, 60.5), unit(9, 241.5, 0.5, 480.5, 60.5)};
+  s = render_segmentation(g, two);
+  CHECK(s(30, 100) == 4);
+  CHECK(s(30, 400) == 9);
 }

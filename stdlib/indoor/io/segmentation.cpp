@@ -7,6 +7,7 @@
 #include <limits>
 #include <map>
 #include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -181,6 +182,36 @@ PairCount wall_contacts(const ClassGrid& grid, double res, const cv::Mat1w& labe
   return out;
 }
 
+// The id each joined set of units keeps (root -> id): of the unit types in it, the one whose
+// units hold most of its cells (ties: the type first by name); of that type's units, the one
+// with the largest segment of its own (ties: the smaller id). A corridor joined from pieces the
+// rule base typed differently keeps the id, and so the type, of most of its length. `area`:
+// cells per id before the join; `find`: the union-find root of an id. Sets of spaces only are
+// not listed (they keep their root, the smallest id).
+template <class Find>
+std::map<int, int> kept_ids(const WorldResult& w, int max_unit, const std::map<int, long>& area, const Find& find) {
+  std::map<int, const UnitResult*> unit_of;
+  for (const auto& u : w.units) unit_of[u.id] = &u;
+  std::map<int, std::map<std::string, long>> type_cells;  // root -> type -> cells
+  std::map<int, std::vector<int>> members;                // root -> its unit ids, ascending
+  for (const auto& [id, cells] : area) {
+    if (id == 0 || id > max_unit || !unit_of.count(id)) continue;
+    type_cells[find(id)][unit_of[id]->type] += cells;
+    members[find(id)].push_back(id);
+  }
+  std::map<int, int> keep;
+  for (const auto& [root, ids] : members) {
+    const auto& tc = type_cells[root];
+    const std::string& main_type =
+        std::max_element(tc.begin(), tc.end(), [](const auto& x, const auto& y) { return x.second < y.second; })->first;
+    int best = 0;
+    for (const int id : ids)
+      if (unit_of[id]->type == main_type && (best == 0 || area.at(id) > area.at(best))) best = id;
+    keep[root] = best;
+  }
+  return keep;
+}
+
 void merge_open_spaces(const ClassGrid& grid, const WorldResult& w, cv::Mat1w& label) {
   const double res = w.map.resolution > 0.0 ? w.map.resolution : 0.05;
   int max_unit = 0;
@@ -231,7 +262,7 @@ void merge_open_spaces(const ClassGrid& grid, const WorldResult& w, cv::Mat1w& l
     joins.push_back({n, ab});
   }
   std::stable_sort(joins.begin(), joins.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
-  std::map<int, int> parent;  // union-find over ids; a set's root is its smallest unit id when it has one
+  std::map<int, int> parent;  // union-find over ids; a set's root is its smallest unit id when it has one (kept_ids renames it)
   const auto find = [&parent](int a) {
     while (true) {
       const auto it = parent.find(a);
@@ -247,9 +278,14 @@ void merge_open_spaces(const ClassGrid& grid, const WorldResult& w, cv::Mat1w& l
     else parent[ra] = rb;
   }
   if (parent.empty()) return;
+  const std::map<int, int> keep = kept_ids(w, max_unit, area, find);
   for (int r = 0; r < label.rows; ++r)
     for (int c = 0; c < label.cols; ++c)
-      if (label(r, c) != 0) label(r, c) = static_cast<std::uint16_t>(find(label(r, c)));
+      if (label(r, c) != 0) {
+        const int root = find(label(r, c));
+        const auto k = keep.find(root);
+        label(r, c) = static_cast<std::uint16_t>(k != keep.end() ? k->second : root);
+      }
 }
 
 // Furniture is part of its room (the benchmark's ground truth, and a robot's map, count the
@@ -364,8 +400,9 @@ cv::Mat1w render_segmentation(const ClassGrid& grid, const WorldResult& w) {
   }
   detach_spaces_behind_doorways(grid, w.map.resolution, explained, label);
   label_unreached_components(grid, w.map.resolution, label);
+  const cv::Mat1w before_join = label.clone();
   merge_open_spaces(grid, w, label);
-  split_at_wall_gaps(grid, w.map.resolution, label);
+  split_at_wall_gaps(grid, w.map.resolution, label, &before_join);
   fill_furniture(grid, w, label);
   return label;
 }

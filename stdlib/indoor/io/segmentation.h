@@ -34,12 +34,16 @@
 //     first. A corridor continues: two corridor-shaped units (under 2.6 m across, or under
 //     4 m and 3 times as long) are joined whatever their size when their free contact exceeds
 //     1.2 m and 3/4 of the narrower one's width, with the same limit on the walls between
-//     them: a ring or an L of corridor pieces meets over the corridor's width;
+//     them: a ring or an L of corridor pieces meets over the corridor's width. A joined
+//     segment keeps the id of one of its units: of the unit types in it, the one whose units
+//     hold most of its cells; of those units, the one with the largest segment of its own;
 //   * a segment that a straight wall line with a gap (at most 3 m) crosses is two spaces: an
 //     office open to its corridor over 2-3 m between wall stubs gets its own id (the stubs'
 //     blobs span at least 1 m: chairs in a row round a table are no wall line); thin
 //     partitions at any angle cut at the gaps between their pieces and at the doorway (up to
-//     1.4 m) beyond a free end (split_at_wall_gaps, wall_gap_cuts.h, thin_walls.h);
+//     1.4 m) beyond a free end (split_at_wall_gaps, wall_gap_cuts.h, thin_walls.h). A piece
+//     cut off a joined segment gets back the id of the unit its cells mostly were, when no
+//     other segment has it, else a new id;
 //   * an occupied 8-connected blob of at most 4 m^2, off the map's edge, whose 4-neighbours are
 //     all free cells of one segment is furniture standing in that room: it gets the segment.
 #pragma once

@@ -14,7 +14,7 @@
 // of chairs round a table gives no cut. The cells of a
 // segment minus its cut cells fall into 4-connected pieces; when two or more pieces are at
 // least kMinPiece large, the largest keeps the segment's id, each other one gets a new id
-// (above every id in use), and the cut cells and small pieces go to the nearest large piece of
+// (above every id in use; or its unit's id back, below), and the cut cells and small pieces go to the nearest large piece of
 // their segment through the segment's cells. A segment with fewer than two large pieces is
 // unchanged, so a cut that does not separate a space (a gap between two tables) changes nothing.
 //
@@ -36,6 +36,11 @@
 
 namespace ksmc::stdlib::indoor::io {
 
-void split_at_wall_gaps(const ClassGrid& grid, double resolution, cv::Mat1w& label);
+// `before_join`, when not null: the labels before merge_open_spaces joined segments. A piece
+// cut off a segment takes back the id its cells mostly had there, when that id is in use
+// nowhere else (a unit the join had absorbed: the piece keeps its unit's id, and so its type);
+// otherwise a new id.
+void split_at_wall_gaps(const ClassGrid& grid, double resolution, cv::Mat1w& label,
+                        const cv::Mat1w* before_join = nullptr);
 
 }  // namespace ksmc::stdlib::indoor::io
