@@ -5,7 +5,11 @@
 # run's segmentation.png (labels.png when absent) with roomseg_score against the map's
 # ground truth. Prints per-map rows and the per-map averages beside the published ones.
 # Environment: SEED (default 1), ROOMSEG_MAPS ("map1 map2 ...": a subset of the 20),
-# KSMC_SHARED_DIR (where ../shared is).
+# ROOMSEG_VARIANTS (default "unfurnished furnished"; also "trashbins" and "furnished_trashbins",
+# the benchmark's two other map images, which share the ground truth), KSMC_SHARED_DIR (where
+# ../shared is). A map whose segmentation cannot be scored is left out with a row saying why
+# (lab_b_scan_furnitures_trashbins.png is 649 x 243, its ground truth 974 x 365); so is a
+# missing image (lab_d_scan has no furnished trashbins image).
 set -euo pipefail
 bin=$1; scorer=$2; out=$3; iters=${4:-10000}
 shift $(( $# >= 4 ? 4 : $# ))
@@ -22,11 +26,18 @@ names=(Freiburg101_scan Freiburg52_scan Freiburg79_scan NLB lab_a_scan lab_b_sca
 [ -n "${ROOMSEG_MAPS:-}" ] && read -r -a names <<< "$ROOMSEG_MAPS"
 mkdir -p "$out"
 printf '| map | variant | R | P | IoU | rooms | segments | seconds |\n|---|---|---|---|---|---|---|---|\n'
-for variant in unfurnished furnished; do
+read -r -a variants <<< "${ROOMSEG_VARIANTS:-unfurnished furnished}"
+for variant in "${variants[@]}"; do
+  case $variant in
+    unfurnished) suffix= ;;
+    furnished) suffix=_furnitures ;;
+    trashbins) suffix=_trashbins ;;
+    furnished_trashbins) suffix=_furnitures_trashbins ;;
+    *) echo "bench/roomseg: unknown variant '$variant' (unfurnished, furnished, trashbins, furnished_trashbins)" >&2; exit 2 ;;
+  esac
   scores=()
   for m in "${names[@]}"; do
-    img=$maps/$m.png
-    [ "$variant" = furnished ] && img=$maps/${m}_furnitures.png
+    img=$maps/$m$suffix.png
     gt=$maps/${m}_gt_segmentation.png
     [ -f "$img" ] && [ -f "$gt" ] || { echo "| $m | $variant | missing input | | | | | |"; continue; }
     dir=$out/$variant/$m
@@ -38,7 +49,9 @@ for variant in unfurnished furnished; do
     t1=$(date +%s.%N)
     seg=$dir/segmentation.png
     if [ ! -f "$seg" ]; then seg=$dir/labels.png; echo "note: $m ($variant) scored labels.png: the binary wrote no segmentation.png"; fi
-    line=$("$scorer" "$gt" "$seg")
+    if ! line=$("$scorer" "$gt" "$seg" 2>&1); then
+      echo "| $m | $variant | not scored: ${line//|/:} | | | | | |"; continue
+    fi
     echo "$line $t0 $t1" | awk -v m="$m" -v v="$variant" \
       '{printf "| %s | %s | %.1f | %.1f | %.1f | %s | %s | %.1f |\n", m, v, 100*$1, 100*$2, 100*$3, $4, $5, $7-$6}'
     scores+=("$line")
