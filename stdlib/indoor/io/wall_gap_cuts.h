@@ -14,8 +14,8 @@
 // of chairs round a table gives no cut. The cells of a
 // segment minus its cut cells fall into 4-connected pieces; when two or more pieces are at
 // least kMinPiece large, the largest keeps the segment's id, each other one gets a new id
-// (above every id in use; or its unit's id back, below), and the cut cells and small pieces go to the nearest large piece of
-// their segment through the segment's cells. A segment with fewer than two large pieces is
+// (above every id in use; or its unit's id back, below), and the cut cells and small pieces
+// go to the nearest large piece of their segment through the segment's cells. A segment with fewer than two large pieces is
 // unchanged, so a cut that does not separate a space (a gap between two tables) changes nothing.
 //
 // Thin walls at any angle (thin_walls.h: partitions at most 0.4 m thick with free space on both
