@@ -140,7 +140,7 @@ constexpr double kOpenCore = 0.5;           // m of contact in open_core, for tw
 constexpr double kWallShare = 0.25;         // wall runs / free contact pairs, for two units
 constexpr double kMaxJoinedPiece = 20.0;    // m^2, for two units
 constexpr double kNarrowUnit = 2.6;         // m across: a corridor (`Narrow` in domains/indoor.ksm)
-constexpr double kEndShare = 0.75;          // of the narrower unit's width, for two narrow units
+constexpr double kEndShare = 0.75;          // of the narrower unit's width, for two corridor-shaped units
 constexpr double kDoorWidth = 1.2;          // m: a contact no wider is a doorway
 
 constexpr double kLongUnit = 4.0;           // m across, at least kLongRatio times as long: a corridor
