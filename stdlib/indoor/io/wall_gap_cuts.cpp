@@ -232,36 +232,42 @@ void split_at_wall_gaps(const ClassGrid& grid, double resolution, cv::Mat1w& lab
     if (area[p] >= min_cells) large[owner[p]].push_back(static_cast<int>(p));
   std::vector<int> target(area.size(), 0);
   std::vector<char> split_segment(static_cast<std::size_t>(max_id) + 1, 0);
-  // The id a piece's cells mostly had before the join, when no segment uses it now.
-  std::vector<int> earlier(area.size(), 0);
-  if (before_join != nullptr) {
-    std::vector<char> in_use(0x10000, 0);
-    for (int r = 0; r < label.rows; ++r)
-      for (int c = 0; c < label.cols; ++c) in_use[label(r, c)] = 1;
-    std::vector<std::map<int, long>> votes(area.size());
-    for (int r = 0; r < label.rows; ++r)
-      for (int c = 0; c < label.cols; ++c)
-        if (const int p = piece(r, c); p >= 0 && (*before_join)(r, c) != 0) ++votes[static_cast<std::size_t>(p)][(*before_join)(r, c)];
-    for (std::size_t p = 0; p < area.size(); ++p) {
-      const auto top = std::max_element(votes[p].begin(), votes[p].end(), [](const auto& x, const auto& y) { return x.second < y.second; });
-      if (top != votes[p].end() && !in_use[static_cast<std::size_t>(top->first)]) earlier[p] = top->first;
-    }
-  }
-  std::vector<char> taken(0x10000, 0);  // earlier ids given back, each once
-  int next = max_id;  // new ids above every id in use now or before the join
-  if (before_join != nullptr)
-    for (int r = 0; r < label.rows; ++r)
-      for (int c = 0; c < label.cols; ++c) next = std::max<int>(next, (*before_join)(r, c));
+  std::vector<int> cut_off;  // the large pieces that lose their segment's id
   for (auto& [id, ps] : large) {
     if (ps.size() < 2) continue;
     split_segment[static_cast<std::size_t>(id)] = 1;
     const auto biggest = *std::max_element(ps.begin(), ps.end(), [&](int a, int b) { return area[a] < area[b]; });
     for (const int p : ps) {
-      const auto i = static_cast<std::size_t>(p);
-      if (p == biggest) target[i] = id;
-      else if (earlier[i] != 0 && !taken[static_cast<std::size_t>(earlier[i])]) target[i] = earlier[i], taken[static_cast<std::size_t>(earlier[i])] = 1;
-      else target[i] = next < 0xffff ? ++next : id;
+      if (p == biggest) target[static_cast<std::size_t>(p)] = id;
+      else cut_off.push_back(p);
     }
+  }
+  // A piece cut off gets back the id its cells mostly had before the join when no segment uses
+  // it now (and no other piece took it), else a new id above every id in use now or before.
+  int next = max_id;
+  std::map<int, std::map<int, long>> votes;  // cut-off piece -> id before the join -> cells
+  std::vector<char> in_use(0x10000, 0);
+  if (before_join != nullptr && !cut_off.empty()) {
+    for (const int p : cut_off) votes[p];
+    for (int r = 0; r < label.rows; ++r)
+      for (int c = 0; c < label.cols; ++c) {
+        const int before = (*before_join)(r, c);
+        in_use[label(r, c)] = 1;
+        next = std::max(next, before);
+        if (const auto v = votes.find(piece(r, c)); before != 0 && v != votes.end()) ++v->second[before];
+      }
+  }
+  for (const int p : cut_off) {
+    int& t = target[static_cast<std::size_t>(p)];
+    if (const auto v = votes.find(p); v != votes.end() && !v->second.empty()) {
+      const int earlier = std::max_element(v->second.begin(), v->second.end(), [](const auto& x, const auto& y) { return x.second < y.second; })->first;
+      if (!in_use[static_cast<std::size_t>(earlier)]) {
+        t = earlier;
+        in_use[static_cast<std::size_t>(earlier)] = 1;
+        continue;
+      }
+    }
+    t = next < 0xffff ? ++next : owner[static_cast<std::size_t>(p)];
   }
   // Cut cells and small pieces of a split segment: the nearest large piece through its cells.
   cv::Mat1w out = label.clone();
