@@ -10,20 +10,13 @@
 # ../shared is). A map whose segmentation cannot be scored is left out with a row saying why
 # (lab_b_scan_furnitures_trashbins.png is 649 x 243, its ground truth 974 x 365); so is a
 # missing image (lab_d_scan has no furnished trashbins image).
+# The same maps turned and rescaled: transforms.sh (docs/indoor_transforms.md).
 set -euo pipefail
 bin=$1; scorer=$2; out=$3; iters=${4:-10000}
 shift $(( $# >= 4 ? 4 : $# ))
 [ "${1:-}" = "--" ] && shift
 here=$(cd "$(dirname "$0")" && pwd)
-maps=${KSMC_SHARED_DIR:-$here/../../../shared}/data/maps/bormann_ipa/test_maps
-if [ ! -d "$maps" ]; then
-  echo "bench/roomseg: $maps is absent; skipped"
-  exit 0
-fi
-names=(Freiburg101_scan Freiburg52_scan Freiburg79_scan NLB lab_a_scan lab_b_scan lab_c_scan lab_d_scan
-       lab_f_scan lab_intel lab_ipa office_a office_b office_c office_d office_e office_f office_g
-       office_h office_i)
-[ -n "${ROOMSEG_MAPS:-}" ] && read -r -a names <<< "$ROOMSEG_MAPS"
+. "$here/maps.sh"
 mkdir -p "$out"
 printf '| map | variant | R | P | IoU | rooms | segments | seconds |\n|---|---|---|---|---|---|---|---|\n'
 read -r -a variants <<< "${ROOMSEG_VARIANTS:-unfurnished furnished}"
