@@ -4,12 +4,18 @@
 // and unknown cells stay 0, a free pocket no unit reaches stays 0 (a larger one is a segment),
 // two units in one open room are one segment.
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "stdlib/indoor/io/segmentation.h"
+#include "stdlib/indoor/io/wall_gap_cuts.h"
 #include "tests/indoor_io/temp_dir.h"
 #include "tests/indoor_io/axis_unit.h"
 
@@ -381,4 +387,74 @@ TEST_CASE("segmentation: a joined segment keeps the id of its main type, a piece
   s = render_segmentation(g, two);
   CHECK(s(30, 100) == 4);
   CHECK(s(30, 400) == 9);
+}
+
+// A floor turned against the image (nearest neighbour, as a SLAM map drawn at an angle): an
+// office open to its corridor over 2 m between the stubs of a 0.35 m wall, both under one unit,
+// turned by 45 degrees. In the building's frame the gap between the stubs is a wall-line cut
+// and office and corridor are two segments. Scanned along the image rows and columns the gap
+// runs at 45 degrees to the scan lines and the wall is too thick across them for a thin wall:
+// no cut, one segment.
+TEST_CASE("segmentation: an office open to its corridor, turned by 45 degrees, is a segment of its own") {
+  const int w0 = 201, h0 = 121;  // 10 x 6 m at 0.05 m
+  cv::Mat1b flat(h0, w0, static_cast<std::uint8_t>(Cell::Free));
+  const auto wall = [&](int r0, int r1, int c0, int c1) {
+    flat(cv::Range(r0, r1 + 1), cv::Range(c0, c1 + 1)) = static_cast<std::uint8_t>(Cell::Occupied);
+  };
+  wall(0, 2, 0, w0 - 1);    // outer walls 0.15 m thick
+  wall(h0 - 3, h0 - 1, 0, w0 - 1);
+  wall(0, h0 - 1, 0, 2);
+  wall(0, h0 - 1, w0 - 3, w0 - 1);
+  wall(75, 81, 0, w0 - 1);  // office and corridor wall, 0.35 m thick, open over 2 m
+  flat(cv::Range(75, 82), cv::Range(80, 120)) = static_cast<std::uint8_t>(Cell::Free);
+  const int n = 240;
+  const auto turned = [&](double degrees, cv::Mat& rot) {  // the floor and its unit turned
+    rot = cv::getRotationMatrix2D(cv::Point2f(100.0f, 60.0f), degrees, 1.0);
+    rot.at<double>(0, 2) += 0.5 * (n - 1) - 100.0;
+    rot.at<double>(1, 2) += 0.5 * (n - 1) - 60.0;
+    const auto turn = [&rot](double x, double y) {
+      return Point2{rot.at<double>(0, 0) * x + rot.at<double>(0, 1) * y + rot.at<double>(0, 2),
+                    rot.at<double>(1, 0) * x + rot.at<double>(1, 1) * y + rot.at<double>(1, 2)};
+    };
+    WorldResult w;
+    w.map.resolution = 0.05;
+    UnitResult u;  // one unit over office and corridor
+    u.id = 1;
+    u.corners = {turn(2.5, 2.5), turn(197.5, 2.5), turn(197.5, 117.5), turn(2.5, 117.5)};
+    w.units = {u};
+    return w;
+  };
+  cv::Mat rot;
+  // The units' direction is read with its sign (image rows down: a counter-clockwise turn is negative).
+  CHECK(dominant_wall_angle(turned(30.0, rot)) * 180.0 / CV_PI == Approx(-30.0).margin(1e-6));
+  const WorldResult w = turned(45.0, rot);
+  ClassGrid g;
+  cv::warpAffine(flat, g, rot, cv::Size(n, n), cv::INTER_NEAREST, cv::BORDER_CONSTANT,
+                 cv::Scalar(static_cast<double>(Cell::Unknown)));
+  const auto turn = [&rot](double x, double y) {
+    return Point2{rot.at<double>(0, 0) * x + rot.at<double>(0, 1) * y + rot.at<double>(0, 2),
+                  rot.at<double>(1, 0) * x + rot.at<double>(1, 1) * y + rot.at<double>(1, 2)};
+  };
+  CHECK(std::abs(dominant_wall_angle(w) * 180.0 / CV_PI) == Approx(45.0).margin(1e-6));
+  const cv::Mat1w s = render_segmentation(g, w);
+  std::map<int, long> cells;
+  for (int r = 0; r < n; ++r)
+    for (int c = 0; c < n; ++c)
+      if (s(r, c) != 0) ++cells[s(r, c)];
+  std::vector<int> spaces;  // segments of at least 1 m^2
+  for (const auto& [id, count] : cells)
+    if (count >= 400) spaces.push_back(id);
+  REQUIRE(spaces.size() == 2);
+  CHECK(spaces[0] == 1);  // the unit's id stays with the larger piece
+  // Each piece is one side of the wall: the centres of office and corridor lie in different ones.
+  const Point2 office = turn(100.0, 40.0), corridor = turn(100.0, 100.0);
+  const int a = s(static_cast<int>(office.y), static_cast<int>(office.x));
+  const int b = s(static_cast<int>(corridor.y), static_cast<int>(corridor.x));
+  CHECK(a != 0);
+  CHECK(b != 0);
+  CHECK(a != b);
+  // Axis-aligned units keep the row and column scans: the direction is 0.
+  WorldResult flat_world;
+  flat_world.units = {unit(1, 10.5, 10.5, 60.5, 40.5), unit(2, 70.5, 10.5, 90.5, 40.5)};
+  CHECK(dominant_wall_angle(flat_world) == 0.0);
 }

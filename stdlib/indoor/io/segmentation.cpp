@@ -402,7 +402,7 @@ cv::Mat1w render_segmentation(const ClassGrid& grid, const WorldResult& w) {
   label_unreached_components(grid, w.map.resolution, label);
   const cv::Mat1w before_join = label.clone();
   merge_open_spaces(grid, w, label);
-  split_at_wall_gaps(grid, w.map.resolution, label, &before_join);
+  split_at_wall_gaps(grid, w.map.resolution, label, &before_join, dominant_wall_angle(w));
   fill_furniture(grid, w, label);
   return label;
 }

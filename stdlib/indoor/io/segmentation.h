@@ -37,7 +37,8 @@
 //     them: a ring or an L of corridor pieces meets over the corridor's width. A joined
 //     segment keeps the id of one of its units: of the unit types in it, the one whose units
 //     hold most of its cells; of those units, the one with the largest segment of its own;
-//   * a segment that a straight wall line with a gap (at most 3 m) crosses is two spaces: an
+//   * a segment that a straight wall line with a gap (at most 3 m) crosses is two spaces (wall
+//     lines along the rows and columns of the building's frame: dominant_wall_angle): an
 //     office open to its corridor over 2-3 m between wall stubs gets its own id (the stubs'
 //     blobs span at least 1 m: chairs in a row round a table are no wall line); thin
 //     partitions at any angle cut at the gaps between their pieces and at the doorway (up to

@@ -20,6 +20,9 @@ constexpr double kMaxGap = 3.0;            // m: an open office front (a door is
 constexpr double kWallRun = 0.3;           // m of wall beyond each end, along the gap's line
 constexpr double kMinPiece = 1.0;          // m^2: a piece that is a space of its own
 constexpr double kMinWallPiece = 1.0;      // m: the longer side of the bounding box of a wall end's occupied blob
+constexpr double kAlignedAngle = 1.0 * CV_PI / 180.0;  // rad: walls within 1 degree of the rows and columns are scanned along them
+constexpr double kNearDirection = 3.0;  // degrees: units this close to the main direction share it
+constexpr double kMinShare = 0.85;      // of the units' area in the main direction: the building has one frame
 constexpr double kMaxEndGap = 1.4;         // m from a thin wall's end to the wall it points at: a door (1.2 m) and the Hough end's slack, under a corridor's width
 
 struct Cuts {
@@ -186,16 +189,88 @@ cv::Mat1b wall_pieces(const ClassGrid& grid, double min_cells) {
   return out;
 }
 
+// The row and column scans (Cuts::scan) in the building's own frame: the map and the labels are
+// turned by `angle` (nearest neighbour, on a canvas grown to hold them, unknown and unlabelled
+// beyond), scanned, and the cut cells turned back; each is widened to its 4-neighbours so that a
+// cut line turned back by nearest neighbour still parts its segment in 4-connected pieces, and
+// kept where the map is free and labelled.
+cv::Mat1b aligned_scan_cuts(const ClassGrid& grid, const cv::Mat1w& label, const Cuts& like, double min_wall_cells,
+                            double angle) {
+  const double deg = angle * 180.0 / CV_PI;
+  const cv::Point2f centre(0.5f * static_cast<float>(grid.cols - 1), 0.5f * static_cast<float>(grid.rows - 1));
+  cv::Mat rot = cv::getRotationMatrix2D(centre, deg, 1.0);
+  const double ca = std::abs(std::cos(angle)), sa = std::abs(std::sin(angle));
+  const cv::Size size(static_cast<int>(std::ceil(grid.cols * ca + grid.rows * sa)),
+                      static_cast<int>(std::ceil(grid.cols * sa + grid.rows * ca)));
+  rot.at<double>(0, 2) += 0.5 * (size.width - 1) - centre.x;
+  rot.at<double>(1, 2) += 0.5 * (size.height - 1) - centre.y;
+  ClassGrid turned_grid;
+  cv::Mat1w turned_label;
+  cv::warpAffine(grid, turned_grid, rot, size, cv::INTER_NEAREST, cv::BORDER_CONSTANT,
+                 cv::Scalar(static_cast<double>(Cell::Unknown)));
+  cv::warpAffine(label, turned_label, rot, size, cv::INTER_NEAREST, cv::BORDER_CONSTANT, cv::Scalar(0));
+  Cuts turned{turned_grid, turned_label, like.run, like.thick, like.max_gap,
+              cv::Mat1b(size, static_cast<std::uint8_t>(0)), wall_pieces(turned_grid, min_wall_cells)};
+  turned.scan(0, 1);
+  turned.scan(1, 0);
+  cv::Mat1b back;
+  cv::warpAffine(turned.cut, back, rot, grid.size(), cv::INTER_NEAREST | cv::WARP_INVERSE_MAP, cv::BORDER_CONSTANT,
+                 cv::Scalar(0));
+  cv::dilate(back, back, cv::getStructuringElement(cv::MORPH_CROSS, cv::Size(3, 3)));
+  for (int r = 0; r < grid.rows; ++r)
+    for (int c = 0; c < grid.cols; ++c)
+      if (back(r, c) && (grid(r, c) != static_cast<std::uint8_t>(Cell::Free) || label(r, c) == 0)) back(r, c) = 0;
+  return back;
+}
+
 }  // namespace
 
-void split_at_wall_gaps(const ClassGrid& grid, double resolution, cv::Mat1w& label, const cv::Mat1w* before_join) {
+double dominant_wall_angle(const WorldResult& w) {
+  // Each unit's edge direction in [-45, 45) degrees (period 90) and its area; the unit direction
+  // with the most area within kNearDirection of it; the area-weighted mean direction there.
+  std::vector<std::pair<double, double>> dirs;
+  double total = 0.0;
+  for (const auto& u : w.units) {
+    const auto& q = u.corners;
+    const double ex = q[1].x - q[0].x, ey = q[1].y - q[0].y;
+    const double area = std::abs(ex * (q[2].y - q[1].y) - ey * (q[2].x - q[1].x));
+    if (!std::isfinite(area) || !(area > 0.0)) continue;
+    double deg = std::atan2(ey, ex) * 180.0 / CV_PI;
+    deg -= 90.0 * std::floor((deg + 45.0) / 90.0);
+    dirs.emplace_back(deg, area);
+    total += area;
+  }
+  const auto offset = [](double a, double b) { return a - b - 90.0 * std::round((a - b) / 90.0); };  // a - b in [-45, 45]
+  double best = 0.0, centre = 0.0;
+  for (const auto& [d, area] : dirs) {
+    double near = 0.0;
+    for (const auto& [e, other] : dirs)
+      if (std::abs(offset(e, d)) <= kNearDirection) near += other;
+    if (near > best) best = near, centre = d;
+  }
+  // Units at several directions (office_e's pentagon): no one frame; rows and columns.
+  if (!(total > 0.0) || best < kMinShare * total) return 0.0;
+  double sum = 0.0;
+  for (const auto& [e, area] : dirs)
+    if (std::abs(offset(e, centre)) <= kNearDirection) sum += area * offset(e, centre);
+  double deg = centre + sum / best;
+  deg -= 90.0 * std::floor((deg + 45.0) / 90.0);
+  return deg * CV_PI / 180.0;
+}
+
+void split_at_wall_gaps(const ClassGrid& grid, double resolution, cv::Mat1w& label, const cv::Mat1w* before_join,
+                        double wall_angle) {
   const double res = resolution > 0.0 ? resolution : 0.05;
   Cuts cuts{grid, label, std::max(1, static_cast<int>(std::lround(kWallRun / res))),
             std::max(1, static_cast<int>(std::lround(kMaxWallThickness / res))),
             static_cast<int>(std::lround(kMaxGap / res)), cv::Mat1b(grid.rows, grid.cols, static_cast<std::uint8_t>(0)),
             wall_pieces(grid, kMinWallPiece / res)};
-  cuts.scan(0, 1);
-  cuts.scan(1, 0);
+  if (std::abs(wall_angle) < kAlignedAngle) {
+    cuts.scan(0, 1);
+    cuts.scan(1, 0);
+  } else {
+    cuts.cut |= aligned_scan_cuts(grid, label, cuts, kMinWallPiece / res, wall_angle);
+  }
   cuts.cut_lines(thin_wall_lines(grid, res), kMaxEndGap / res, 1.0 / res);
   // 4-connected pieces of each segment without its cut cells.
   cv::Mat1i piece(label.rows, label.cols, -1);
