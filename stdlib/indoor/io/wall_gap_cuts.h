@@ -7,17 +7,17 @@
 //
 // Rule, per row and per column of the map (of the building's frame: `wall_angle` below): a run
 // of free, labelled cells at most kMaxGap long whose two ends are wall cells where a wall
-// continues straight on along the run's line (at
-// least kWallRun of occupied cells beyond each end, and that wall at most kMaxWallThickness
-// thick across the line) is a gap in a wall line, a cut, when the occupied blob (8-connected)
-// at each end spans at least kMinWallPiece (1 m): part of a wall, not a chair. A wall crossed
-// across its thickness, a thick block, furniture that does not line up on both ends, or a row
-// of chairs round a table gives no cut. The cells of a
-// segment minus its cut cells fall into 4-connected pieces; when two or more pieces are at
-// least kMinPiece large, the largest keeps the segment's id, each other one gets a new id
-// (above every id in use; or its unit's id back, below), and the cut cells and small pieces
-// go to the nearest large piece of their segment through the segment's cells. A segment with fewer than two large pieces is
-// unchanged, so a cut that does not separate a space (a gap between two tables) changes nothing.
+// continues straight on along the run's line (at least kWallRun of occupied cells beyond each
+// end, and that wall at most kMaxWallThickness thick across the line) is a gap in a wall line,
+// a cut, when the occupied blob (8-connected) at each end spans at least kMinWallPiece (1 m):
+// part of a wall, not a chair. A wall crossed across its thickness, a thick block, furniture
+// that does not line up on both ends, or a row of chairs round a table gives no cut. The cells
+// of a segment minus its cut cells fall into 4-connected pieces; when two or more pieces are at
+// least kMinPiece large, the largest keeps the segment's id, each other one gets a new id (above
+// every id in use; or its unit's id back, below), and the cut cells and small pieces go to the
+// nearest large piece of their segment through the segment's cells. A segment with fewer than
+// two large pieces is unchanged, so a cut that does not separate a space (a gap between two
+// tables) changes nothing.
 //
 // Thin walls at any angle (thin_walls.h: partitions at most 0.4 m thick with free space on both
 // sides, found as Hough lines, so one-cell walls drawn slightly off the grid axes count) give
@@ -53,7 +53,7 @@ void split_at_wall_gaps(const ClassGrid& grid, double resolution, cv::Mat1w& lab
 // The direction of the units' edges modulo 90 degrees, in radians in [-pi/4, pi/4): of the
 // units' directions, the one with the most unit area within 3 degrees of it, refined to the
 // area-weighted mean there. 0 for a world without units, and when that direction holds under
-// 85 % of the units' area (office_e's pentagon, 65-81 %: no one frame), so that rows and
+// 85 % of the units' area (office_e's pentagon, 65-81 % on seeds 1-3: no one frame), so that rows and
 // columns are scanned.
 double dominant_wall_angle(const WorldResult& w);
 
