@@ -10,6 +10,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "stdlib/indoor/cell.h"
+#include "stdlib/indoor/detect/orientation.h"
 #include "stdlib/indoor/io/thin_walls.h"
 
 namespace ksmc::stdlib::indoor::io {
@@ -245,14 +246,14 @@ double dominant_wall_angle(const WorldResult& w) {
   for (const auto& [d, area] : dirs) {
     double near = 0.0;
     for (const auto& [e, other] : dirs)
-      if (std::abs(offset(e, d)) <= kNearDirection) near += other;
+      if (detect::angle_diff_mod90(e, d) <= kNearDirection) near += other;
     if (near > best) best = near, centre = d;
   }
   // Units at several directions (office_e's pentagon): no one frame; rows and columns.
   if (!(total > 0.0) || best < kMinShare * total) return 0.0;
   double sum = 0.0;
   for (const auto& [e, area] : dirs)
-    if (std::abs(offset(e, centre)) <= kNearDirection) sum += area * offset(e, centre);
+    if (detect::angle_diff_mod90(e, centre) <= kNearDirection) sum += area * offset(e, centre);
   double deg = centre + sum / best;
   deg -= 90.0 * std::floor((deg + 45.0) / 90.0);
   return deg * CV_PI / 180.0;
@@ -261,11 +262,14 @@ double dominant_wall_angle(const WorldResult& w) {
 void split_at_wall_gaps(const ClassGrid& grid, double resolution, cv::Mat1w& label, const cv::Mat1w* before_join,
                         double wall_angle) {
   const double res = resolution > 0.0 ? resolution : 0.05;
+  const bool aligned = std::abs(wall_angle) < kAlignedAngle;
+  // The wall pieces are read only by the row and column scans, which run on this grid when the
+  // building is aligned with it (aligned_scan_cuts finds those of the turned grid).
   Cuts cuts{grid, label, std::max(1, static_cast<int>(std::lround(kWallRun / res))),
             std::max(1, static_cast<int>(std::lround(kMaxWallThickness / res))),
             static_cast<int>(std::lround(kMaxGap / res)), cv::Mat1b(grid.rows, grid.cols, static_cast<std::uint8_t>(0)),
-            wall_pieces(grid, kMinWallPiece / res)};
-  if (std::abs(wall_angle) < kAlignedAngle) {
+            aligned ? wall_pieces(grid, kMinWallPiece / res) : cv::Mat1b()};
+  if (aligned) {
     cuts.scan(0, 1);
     cuts.scan(1, 0);
   } else {
