@@ -11,7 +11,11 @@ in metres per cell (the originals are 0.05). TRANSFORM is one of
             SLAM map whose building is not aligned with the image axes;
   half      2 x 2 cells to one, 0.1 m per cell: a cell is the darkest of its four (a wall or
             unknown cell wins over free), as a coarser occupancy grid would mark it;
-  double    each cell split in 2 x 2, 0.025 m per cell.
+  double    each cell split in 2 x 2, 0.025 m per cell;
+  speckleN  N per mille of the free cells (>= 250) turned occupied (0), single cells drawn
+            uniformly with a generator seeded by the map's file name: the specks a SLAM map
+            keeps where a person passed or a beam returned early. The ground truth is unchanged
+            (a speck is no longer free; the scorer's rooms stay whole).
 
 The ground truth is moved as room regions, not as an image: the rooms the scorer sees in the
 original (8-connected regions of pixels >= 250 larger than 100 pixels, bench/roomseg/score.h)
@@ -23,6 +27,7 @@ Needs numpy, scipy and PIL.
 """
 import re
 import sys
+import zlib
 
 import numpy as np
 from PIL import Image
@@ -71,6 +76,7 @@ def main(argv):
     labels = rooms(gt)
     resolution = 0.05
     rot = re.fullmatch(r"rot(-?\d+(?:\.\d+)?)", transform)
+    speckle = re.fullmatch(r"speckle(\d+(?:\.\d+)?)", transform)
     if transform == "none":
         pass
     elif rot:
@@ -89,8 +95,14 @@ def main(argv):
         grid = np.kron(grid, np.ones((2, 2), np.uint8))
         labels = np.kron(labels, np.ones((2, 2), labels.dtype))
         resolution = 0.025
+    elif speckle:
+        rng = np.random.default_rng(zlib.crc32(map_path.rsplit("/", 1)[-1].encode()))
+        free = np.flatnonzero(grid >= 250)
+        specks = rng.choice(free, size=int(round(len(free) * float(speckle.group(1)) / 1000.0)), replace=False)
+        grid = grid.copy()
+        grid.flat[specks] = 0
     else:
-        sys.stderr.write(f"transform_map.py: unknown transform '{transform}' (none, rotN, half, double)\n")
+        sys.stderr.write(f"transform_map.py: unknown transform '{transform}' (none, rotN, half, double, speckleN)\n")
         return 2
     Image.fromarray(np.ascontiguousarray(grid, dtype=np.uint8)).save(f"{out}/map.png")
     Image.fromarray(gt_image(labels)).save(f"{out}/gt.png")

@@ -38,16 +38,26 @@ struct Cuts {
   bool occupied(int r, int c) const {
     return r >= 0 && c >= 0 && r < grid.rows && c < grid.cols && grid(r, c) == static_cast<std::uint8_t>(Cell::Occupied);
   }
-  // A wall continues from (r, c) for `run` cells in direction (dr, dc), and at its far end it
-  // is at most `thick` cells thick across that direction.
+  // How many cells at the far end of a wall's run must be thin across: 1 on the map's own grid.
+  // On a grid turned by nearest neighbour a wall's faces are jagged by a cell, so that a wall
+  // about as thick as `run`, crossing the scan line, ends in a cell standing out of its face on
+  // some rows: there the last two cells must be thin (a wall lying along the line is thin all along).
+  int thin_ends = 1;
+  // A wall continues from (r, c) for `run` cells in direction (dr, dc), and at its far end (its
+  // last thin_ends cells) it is at most `thick` cells thick across that direction.
   bool wall_along(int r, int c, int dr, int dc) const {
     for (int k = 0; k < run; ++k)
       if (!occupied(r + dr * k, c + dc * k)) return false;
-    const int fr = r + dr * (run - 1), fc = c + dc * (run - 1);
-    int n = 1;
-    for (int s = 1; occupied(fr + dc * s, fc + dr * s) && n <= thick; ++s) ++n;
-    for (int s = 1; occupied(fr - dc * s, fc - dr * s) && n <= thick; ++s) ++n;
-    return n <= thick;
+    const auto thin_at = [&](int k) {
+      const int fr = r + dr * k, fc = c + dc * k;
+      int n = 1;
+      for (int s = 1; occupied(fr + dc * s, fc + dr * s) && n <= thick; ++s) ++n;
+      for (int s = 1; occupied(fr - dc * s, fc - dr * s) && n <= thick; ++s) ++n;
+      return n <= thick;
+    };
+    for (int k = run - 1; k >= std::max(0, run - thin_ends); --k)
+      if (!thin_at(k)) return false;
+    return true;
   }
   // Scan lines of direction (dr, dc): rows for (0, 1), columns for (1, 0).
   void scan(int dr, int dc) {
@@ -211,7 +221,7 @@ cv::Mat1b aligned_scan_cuts(const ClassGrid& grid, const cv::Mat1w& label, const
                  cv::Scalar(static_cast<double>(Cell::Unknown)));
   cv::warpAffine(label, turned_label, rot, size, cv::INTER_NEAREST, cv::BORDER_CONSTANT, cv::Scalar(0));
   Cuts turned{turned_grid, turned_label, like.run, like.thick, like.max_gap,
-              cv::Mat1b(size, static_cast<std::uint8_t>(0)), wall_pieces(turned_grid, min_wall_cells)};
+              cv::Mat1b(size, static_cast<std::uint8_t>(0)), wall_pieces(turned_grid, min_wall_cells), 2};
   turned.scan(0, 1);
   turned.scan(1, 0);
   cv::Mat1b back;

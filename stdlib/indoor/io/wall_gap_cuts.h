@@ -46,7 +46,9 @@ namespace ksmc::stdlib::indoor::io {
 // degrees. The row and column scans run in the building's frame: along the map's rows and
 // columns when the walls are within 1 degree of them, else on the map turned by that angle, so
 // that on a map whose building is not aligned with the image a thick wall crossed obliquely
-// gives no cut.
+// gives no cut. On the turned map a wall's faces are jagged by a cell, so there the wall beyond
+// a gap's end must be thin across at its last two cells, not at its last one alone: a wall
+// crossing the row, about as thick as kWallRun, is then no wall lying along the row.
 void split_at_wall_gaps(const ClassGrid& grid, double resolution, cv::Mat1w& label,
                         const cv::Mat1w* before_join = nullptr, double wall_angle = 0.0);
 
