@@ -5,7 +5,8 @@
 # 0.05 m? transform_map.py writes each transformed map with its ground truth (rooms moved as
 # regions); the indoor binary runs on it at the transformed resolution, and roomseg_score
 # scores segmentation.png. Prints per-map rows (R / P / IoU, seconds) and per-transform averages.
-# Environment: SEED (default 1), TRANSFORMS (default "none rot20 rot45 half double"),
+# Environment: SEED (default 1), TRANSFORMS (default "none rot20 rot45 half double"; any rotN
+# and speckleN, transform_map.py),
 # ROOMSEG_MAPS ("map1 map2 ...": a subset of the 20), KSMC_SHARED_DIR (where ../shared is),
 # PYTHON (default /usr/bin/python3, with numpy, scipy and PIL).
 set -euo pipefail
