@@ -21,13 +21,7 @@ mkdir -p "$out"
 printf '| map | variant | R | P | IoU | rooms | segments | seconds |\n|---|---|---|---|---|---|---|---|\n'
 read -r -a variants <<< "${ROOMSEG_VARIANTS:-unfurnished furnished}"
 for variant in "${variants[@]}"; do
-  case $variant in
-    unfurnished) suffix= ;;
-    furnished) suffix=_furnitures ;;
-    trashbins) suffix=_trashbins ;;
-    furnished_trashbins) suffix=_furnitures_trashbins ;;
-    *) echo "bench/roomseg: unknown variant '$variant' (unfurnished, furnished, trashbins, furnished_trashbins)" >&2; exit 2 ;;
-  esac
+  suffix=$(variant_suffix "$variant")
   scores=()
   for m in "${names[@]}"; do
     img=$maps/$m$suffix.png

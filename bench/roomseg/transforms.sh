@@ -6,7 +6,7 @@
 # regions); the indoor binary runs on it at the transformed resolution, and roomseg_score
 # scores segmentation.png. Prints per-map rows (R / P / IoU, seconds) and per-transform averages.
 # Environment: SEED (default 1), TRANSFORMS (default "none rot20 rot45 half double"; any rotN
-# and speckleN, transform_map.py),
+# and speckleN, transform_map.py), ROOMSEG_VARIANT (default unfurnished; or furnished, ...),
 # ROOMSEG_MAPS ("map1 map2 ...": a subset of the 20), KSMC_SHARED_DIR (where ../shared is),
 # PYTHON (default /usr/bin/python3, with numpy, scipy and PIL).
 set -euo pipefail
@@ -17,6 +17,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 . "$here/maps.sh"
 py=${PYTHON:-/usr/bin/python3}
 read -r -a transforms <<< "${TRANSFORMS:-none rot20 rot45 half double}"
+suffix=$(variant_suffix "${ROOMSEG_VARIANT:-unfurnished}")
 mkdir -p "$out"
 printf '| map | transform | R | P | IoU | rooms | segments | seconds |\n|---|---|---|---|---|---|---|---|\n'
 summary=()
@@ -25,7 +26,7 @@ for t in "${transforms[@]}"; do
   for m in "${names[@]}"; do
     dir=$out/$t/$m
     mkdir -p "$dir/input"
-    if ! res=$("$py" "$here/transform_map.py" "$maps/$m.png" "$maps/${m}_gt_segmentation.png" "$t" "$dir/input" 2>&1); then
+    if ! res=$("$py" "$here/transform_map.py" "$maps/$m$suffix.png" "$maps/${m}_gt_segmentation.png" "$t" "$dir/input" 2>&1); then
       echo "| $m | $t | transform failed: ${res//|/:} | | | | | |"; continue
     fi
     t0=$(date +%s.%N)
