@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # bench/roomseg/transforms.sh INDOOR_BIN SCORE_BIN OUT_DIR [ITERATIONS (default auto)] [-- extra indoor flags]
-# The Bormann et al. maps (unfurnished) turned and rescaled: does the segmentation hold when
-# the building is not aligned with the image axes, or the grid is coarser or finer than
-# 0.05 m? transform_map.py writes each transformed map with its ground truth (rooms moved as
+# The Bormann et al. maps (ROOMSEG_VARIANT, unfurnished by default) turned, rescaled or
+# speckled: does the segmentation hold when the building is not aligned with the image axes,
+# the grid is coarser or finer than 0.05 m, or the free space holds specks? transform_map.py writes each transformed map with its ground truth (rooms moved as
 # regions); the indoor binary runs on it at the transformed resolution, and roomseg_score
 # scores segmentation.png. Prints per-map rows (R / P / IoU, seconds) and per-transform averages.
 # Environment: SEED (default 1), TRANSFORMS (default "none rot20 rot45 half double"; any rotN
