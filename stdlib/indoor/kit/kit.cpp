@@ -28,6 +28,7 @@
 #include "stdlib/indoor/kit/after_run.h"
 #include "stdlib/indoor/kit/indoor_model.h"
 #include "stdlib/indoor/kit/solid_interior.h"
+#include "stdlib/indoor/kit/specks.h"
 #include "stdlib/indoor/blocks/walls.h"
 
 namespace ksmc::stdlib::indoor::kit {
@@ -255,6 +256,11 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
   cli::check_work(map_estimate(path, *map, in), in);  // large maps: cost said up front, refused above --max-memory-mb
   if (map->counts().free == 0) throw std::runtime_error(path.string() + ": the map has no free cell");
   const double res = map->resolution;
+  const double speck_size = in.flags.real("speck-size");
+  if (!(speck_size >= 0.0) || !std::isfinite(speck_size)) throw cli::UsageError("--speck-size must be >= 0 metres");
+  const int speck_cells = static_cast<int>(std::floor(speck_size / res + 1e-9));
+  cli::stage(in, "clearing specks");
+  const std::size_t specks_cleared = clear_specks(map->grid, speck_cells);
   const double solid_depth = in.flags.real("solid-depth");
   if (!(solid_depth >= 0.0) || !std::isfinite(solid_depth)) throw cli::UsageError("--solid-depth must be >= 0 metres");
   cli::stage(in, "classifying solid interiors");
@@ -342,6 +348,7 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
   extra["rpb_candidate"] = fixed.rpb_found;
   extra["frame_deg"] = fixed.frame_deg;
   extra["solid_interior"] = {{"depth_m", solid_depth}, {"cells_unexplained", solid_cells}};
+  extra["specks"] = {{"size_m", speck_size}, {"size_cells", speck_cells}, {"cells_cleared", specks_cleared}};
   extra["semantic"] = {{"enabled", plan.semantic}, {"mln_prior", plan.mln_prior}};
   setup.summary_extra = std::move(extra);
   return setup;
@@ -368,6 +375,7 @@ cli::DomainSpec domain_spec(const blocks::Binding& b) {
       {"thresholds", "grey values of bare images (a YAML sets its own): drawn (>= 250 free, < 89 occupied, between: the one grey painting >= 5 % of the image unknown, the other greys occupied: drawn plans' grey walls and SLAM images' unexplored paint both read right), strict (>= 250 free, < 89 occupied, else unknown), ros (map_server) or bormann (>= 250 free, else occupied)", "drawn", K::text},
       {"source-refresh", "proposals between FSU / door candidate refreshes", "200", K::integer},
       {"path", "X1,Y1 X2,Y2: a route (metres, map frame) from the first point to the second over the door graph, written to path.json and drawn on overlay.png", "", K::text, false, 2},
+      {"speck-size", "occupied specks in open floor (8-connected, every neighbour free) no wider than this (m) read as free: a SLAM map's noise, which would read as walls between units (0 = keep them)", "0.1", K::real},
       {"solid-depth", "occupied cells farther than this (m) from every free cell are classified unexplained: the inside of solid black regions, e.g. a map's outside painted black (0 = eq. 3.7 as is)", "0.5", K::real},
   };
   spec.load = [binding](const cli::DomainInput& in) { return load(binding, in); };

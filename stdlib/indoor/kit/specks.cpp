@@ -1,0 +1,45 @@
+#include "stdlib/indoor/kit/specks.h"
+
+#include <vector>
+
+#include <opencv2/imgproc.hpp>
+
+namespace ksmc::stdlib::indoor::kit {
+
+std::size_t clear_specks(ClassGrid& grid, int max_cells) {
+  if (max_cells < 1 || grid.empty()) return 0;
+  constexpr auto kOccupied = static_cast<std::uint8_t>(Cell::Occupied), kFree = static_cast<std::uint8_t>(Cell::Free);
+  cv::Mat1b occupied(grid.rows, grid.cols);
+  for (int r = 0; r < grid.rows; ++r)
+    for (int c = 0; c < grid.cols; ++c) occupied(r, c) = grid(r, c) == kOccupied ? 255 : 0;
+  cv::Mat1i labels, stats;
+  cv::Mat1d centroids;
+  const int n = cv::connectedComponentsWithStats(occupied, labels, stats, centroids, 8, CV_32S);
+  // A region is a speck when it is small and no cell beside it is anything but free.
+  std::vector<char> speck(static_cast<std::size_t>(n), 0);
+  for (int l = 1; l < n; ++l)
+    speck[static_cast<std::size_t>(l)] = stats(l, cv::CC_STAT_WIDTH) <= max_cells && stats(l, cv::CC_STAT_HEIGHT) <= max_cells;
+  for (int r = 0; r < grid.rows; ++r)
+    for (int c = 0; c < grid.cols; ++c) {
+      const int l = labels(r, c);
+      if (l == 0 || !speck[static_cast<std::size_t>(l)]) continue;
+      for (int dr = -1; dr <= 1 && speck[static_cast<std::size_t>(l)]; ++dr)
+        for (int dc = -1; dc <= 1; ++dc) {
+          const int rr = r + dr, cc = c + dc;
+          if (rr < 0 || cc < 0 || rr >= grid.rows || cc >= grid.cols || (grid(rr, cc) != kFree && labels(rr, cc) != l)) {
+            speck[static_cast<std::size_t>(l)] = 0;
+            break;
+          }
+        }
+    }
+  std::size_t changed = 0;
+  for (int r = 0; r < grid.rows; ++r)
+    for (int c = 0; c < grid.cols; ++c)
+      if (speck[static_cast<std::size_t>(labels(r, c))] != 0 && labels(r, c) != 0) {
+        grid(r, c) = kFree;
+        ++changed;
+      }
+  return changed;
+}
+
+}  // namespace ksmc::stdlib::indoor::kit
