@@ -9,6 +9,7 @@
 #include "stdlib/indoor/blocks/walls.h"
 #include "stdlib/indoor/free_distance.h"
 #include "stdlib/indoor/kit/semantic_layer.h"
+#include "stdlib/indoor/kit/specks.h"
 #include "stdlib/indoor/map_evidence.h"
 #include "tests/indoor_kit/binding.h"
 
@@ -140,6 +141,22 @@ TEST_CASE("open_join: a free run on the midline between two joined units longer 
   CHECK(!blk::geom::open_join(sc, sc.rect(0), sc.rect(1), 2.0, 2.0, 0.75, 1.8));  // 1.7 m < min_run
   CHECK(!blk::geom::open_join(sd, sd.rect(0), sd.rect(1), 2.0, 2.0, 0.75, 0.1));  // a door: 0.45 of the join
   CHECK(!blk::geom::open_join(sw, sw.rect(0), sw.rect(1), 2.0, 2.0, 0.01, 0.0));  // a wall: no run at all
+}
+
+TEST_CASE("open_join: a speck on the join of two corridor pieces is no wall once cleared", "[indoor_kit]") {
+  // Two pieces of a corridor 2 m wide (x 0..100 and 100..200, y 0..40), no wall between them,
+  // and one occupied cell on the line between them, at y = 15 or 25 (a SLAM map's speck).
+  const World w = world_of({{50, 20, 100, 40, 0}, {150, 20, 100, 40, 0}});
+  const int y = GENERATE(15, 25);
+  ClassGrid map(40, 200, static_cast<std::uint8_t>(Cell::Free));
+  map(y, 100) = static_cast<std::uint8_t>(Cell::Occupied);
+  const blk::Scene raw(w, 0.05, &map);
+  // The longest free run is 25 cells (1.25 m), under 3/4 of the 40 and under 2 m: not open.
+  CHECK(!blk::geom::open_join(raw, raw.rect(0), raw.rect(1), 2.0, 2.0, 0.75, 1.2));
+  ClassGrid cleared = map.clone();
+  CHECK(clear_specks(cleared, 2) == 1);
+  const blk::Scene sc(w, 0.05, &cleared);
+  CHECK(blk::geom::open_join(sc, sc.rect(0), sc.rect(1), 2.0, 2.0, 0.75, 1.2));
 }
 
 TEST_CASE("end_join: b lies off a's shorter side", "[indoor_kit]") {
