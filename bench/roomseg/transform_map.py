@@ -17,6 +17,9 @@ in metres per cell (the originals are 0.05). TRANSFORM is one of
             keeps where a person passed or a beam returned early. The ground truth is unchanged
             (a speck is no longer free; the scorer's rooms stay whole).
 
+Transforms joined by + are applied left to right: rot20+speckle10 turns the map, then speckles
+its free cells.
+
 The ground truth is moved as room regions, not as an image: the rooms the scorer sees in the
 original (8-connected regions of pixels >= 250 larger than 100 pixels, bench/roomseg/score.h)
 are labelled, the labels transformed (a half-size cell keeps a label only when all four of its
@@ -63,6 +66,39 @@ def gt_image(labels):
     return np.where((lab != 0) & ~mixed, 255, 0).astype(np.uint8)
 
 
+def apply_step(step, grid, labels, resolution, map_path):
+    """One transform: the moved map, room labels and resolution, or None for an unknown name."""
+    rot = re.fullmatch(r"rot(-?\d+(?:\.\d+)?)", step)
+    speckle = re.fullmatch(r"speckle(\d+(?:\.\d+)?)", step)
+    if step == "none":
+        pass
+    elif rot:
+        deg = float(rot.group(1))
+        grid = rotate(grid, deg, grid[0, 0])
+        labels = rotate(labels.astype(np.int32), deg, 0)
+    elif step == "half":
+        h, w = (grid.shape[0] // 2) * 2, (grid.shape[1] // 2) * 2
+        grid = grid[:h, :w].reshape(h // 2, 2, w // 2, 2).min(axis=(1, 3))
+        blocks = labels[:h, :w].reshape(h // 2, 2, w // 2, 2)
+        first = blocks[:, 0, :, 0]
+        same = (blocks == first[:, None, :, None]).all(axis=(1, 3))
+        labels = np.where(same, first, 0)
+        resolution *= 2
+    elif step == "double":
+        grid = np.kron(grid, np.ones((2, 2), np.uint8))
+        labels = np.kron(labels, np.ones((2, 2), labels.dtype))
+        resolution /= 2
+    elif speckle:
+        rng = np.random.default_rng(zlib.crc32(map_path.rsplit("/", 1)[-1].encode()))
+        free = np.flatnonzero(grid >= 250)
+        specks = rng.choice(free, size=int(round(len(free) * float(speckle.group(1)) / 1000.0)), replace=False)
+        grid = grid.copy()
+        grid.flat[specks] = 0
+    else:
+        return None
+    return grid, labels, resolution
+
+
 def main(argv):
     if len(argv) != 5:
         sys.stderr.write(__doc__)
@@ -75,35 +111,13 @@ def main(argv):
         return 1
     labels = rooms(gt)
     resolution = 0.05
-    rot = re.fullmatch(r"rot(-?\d+(?:\.\d+)?)", transform)
-    speckle = re.fullmatch(r"speckle(\d+(?:\.\d+)?)", transform)
-    if transform == "none":
-        pass
-    elif rot:
-        deg = float(rot.group(1))
-        grid = rotate(grid, deg, grid[0, 0])
-        labels = rotate(labels.astype(np.int32), deg, 0)
-    elif transform == "half":
-        h, w = (grid.shape[0] // 2) * 2, (grid.shape[1] // 2) * 2
-        grid = grid[:h, :w].reshape(h // 2, 2, w // 2, 2).min(axis=(1, 3))
-        blocks = labels[:h, :w].reshape(h // 2, 2, w // 2, 2)
-        first = blocks[:, 0, :, 0]
-        same = (blocks == first[:, None, :, None]).all(axis=(1, 3))
-        labels = np.where(same, first, 0)
-        resolution = 0.1
-    elif transform == "double":
-        grid = np.kron(grid, np.ones((2, 2), np.uint8))
-        labels = np.kron(labels, np.ones((2, 2), labels.dtype))
-        resolution = 0.025
-    elif speckle:
-        rng = np.random.default_rng(zlib.crc32(map_path.rsplit("/", 1)[-1].encode()))
-        free = np.flatnonzero(grid >= 250)
-        specks = rng.choice(free, size=int(round(len(free) * float(speckle.group(1)) / 1000.0)), replace=False)
-        grid = grid.copy()
-        grid.flat[specks] = 0
-    else:
-        sys.stderr.write(f"transform_map.py: unknown transform '{transform}' (none, rotN, half, double, speckleN)\n")
-        return 2
+    for step in transform.split("+"):
+        moved = apply_step(step, grid, labels, resolution, map_path)
+        if moved is None:
+            sys.stderr.write(f"transform_map.py: unknown transform '{step}' (none, rotN, half, double, speckleN; "
+                             "joined by +)\n")
+            return 2
+        grid, labels, resolution = moved
     Image.fromarray(np.ascontiguousarray(grid, dtype=np.uint8)).save(f"{out}/map.png")
     Image.fromarray(gt_image(labels)).save(f"{out}/gt.png")
     print(resolution)

@@ -6,7 +6,8 @@
 # regions); the indoor binary runs on it at the transformed resolution, and roomseg_score
 # scores segmentation.png. Prints per-map rows (R / P / IoU, seconds) and per-transform averages.
 # Environment: SEED (default 1), TRANSFORMS (default "none rot20 rot45 half double"; any rotN
-# and speckleN, transform_map.py), ROOMSEG_VARIANT (default unfurnished; or furnished, ...),
+# and speckleN, and steps joined by +, e.g. rot20+speckle10: transform_map.py),
+# ROOMSEG_VARIANT (default unfurnished; or furnished, ...),
 # ROOMSEG_MAPS ("map1 map2 ...": a subset of the 20), KSMC_SHARED_DIR (where ../shared is),
 # PYTHON (default /usr/bin/python3, with numpy, scipy and PIL).
 set -euo pipefail
