@@ -1,8 +1,8 @@
 // Classified map C_M (seed eq. 3.7) of SLAM maps that keep specks: single occupied cells in open
 // floor where a person walked past or a beam came back early. Eq. 3.7 reads each as a wall, so
 // every rule that asks whether two units are separated by a wall sees one wherever a speck lies
-// on their join: one speck in 1 % of the free cells cut office_e's rooms and Freiburg52_scan's
-// corridor into pieces (docs/indoor_transforms.md, "Speckled maps").
+// on their join: with 1 % of the free cells speckled, office_e's ring corridor and
+// Freiburg52_scan's corridor came out in pieces (docs/indoor_transforms.md, "Speckled maps").
 // clear_specks() reads as free every 8-connected occupied region that fits in a square of
 // `max_cells` cells and whose every neighbour is free: a speck in open floor. A wall end, a
 // pillar or furniture wider than that, and anything touching unexplored or unexplained cells
