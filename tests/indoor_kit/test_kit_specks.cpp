@@ -48,6 +48,23 @@ TEST_CASE("specks: single cells and 2 x 2 blobs in open floor become free", "[in
   CHECK(kit::clear_specks(g, 3) == 9);
 }
 
+TEST_CASE("specks: a dot within twice the size of a wall is a fragment of it, not a speck", "[indoor_kit]") {
+  // A thin wall drawn broken (lab_d_scan): a wall from column 0 to 20 on row 10, a dot in line
+  // with it 3 cells past its end and one 4 cells beside it (distances 3 and 4 <= 2 x 2: kept),
+  // and two dots 20 and 25 cells past its end (cleared).
+  ClassGrid g(20, 60, fr);
+  cv::rectangle(g, cv::Point(0, 10), cv::Point(20, 10), cv::Scalar(occ), cv::FILLED);
+  g(10, 23) = occ;
+  g(10, 40) = occ;
+  g(10, 45) = occ;  // 5 cells from the dot at 40, which is small too: no wall near
+  g(14, 10) = occ;
+  CHECK(kit::clear_specks(g, 2) == 2);
+  CHECK(g(10, 23) == occ);
+  CHECK(g(14, 10) == occ);
+  CHECK(g(10, 40) == fr);
+  CHECK(g(10, 45) == fr);
+}
+
 TEST_CASE("specks: a small region beside unexplored cells or the map's edge stays occupied", "[indoor_kit]") {
   ClassGrid g(20, 20, fr);
   cv::rectangle(g, cv::Point(0, 10), cv::Point(19, 19), cv::Scalar(unk), cv::FILLED);  // unexplored below row 10

@@ -32,6 +32,21 @@ std::size_t clear_specks(ClassGrid& grid, int max_cells) {
           }
         }
     }
+  // A small region within 2 * max_cells of a larger one is a fragment of it (the dots left of a
+  // thin wall drawn broken, lab_d_scan), not a speck in open floor.
+  cv::Mat1b not_large(grid.rows, grid.cols);
+  for (int r = 0; r < grid.rows; ++r)
+    for (int c = 0; c < grid.cols; ++c) {
+      const int l = labels(r, c);
+      not_large(r, c) = l != 0 && stats(l, cv::CC_STAT_WIDTH) <= max_cells && stats(l, cv::CC_STAT_HEIGHT) <= max_cells ? 255
+                        : l != 0 ? 0 : 255;
+    }
+  cv::Mat1f to_large;
+  cv::distanceTransform(not_large, to_large, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  const float near = 2.0F * static_cast<float>(max_cells);
+  for (int r = 0; r < grid.rows; ++r)
+    for (int c = 0; c < grid.cols; ++c)
+      if (labels(r, c) != 0 && to_large(r, c) <= near) speck[static_cast<std::size_t>(labels(r, c))] = 0;
   std::size_t changed = 0;
   for (int r = 0; r < grid.rows; ++r)
     for (int c = 0; c < grid.cols; ++c)
