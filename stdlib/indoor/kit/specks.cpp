@@ -16,9 +16,10 @@ std::size_t clear_specks(ClassGrid& grid, int max_cells) {
   cv::Mat1d centroids;
   const int n = cv::connectedComponentsWithStats(occupied, labels, stats, centroids, 8, CV_32S);
   // A region is a speck when it is small and no cell beside it is anything but free.
-  std::vector<char> speck(static_cast<std::size_t>(n), 0);
+  std::vector<char> small(static_cast<std::size_t>(n), 0);
   for (int l = 1; l < n; ++l)
-    speck[static_cast<std::size_t>(l)] = stats(l, cv::CC_STAT_WIDTH) <= max_cells && stats(l, cv::CC_STAT_HEIGHT) <= max_cells;
+    small[static_cast<std::size_t>(l)] = stats(l, cv::CC_STAT_WIDTH) <= max_cells && stats(l, cv::CC_STAT_HEIGHT) <= max_cells;
+  std::vector<char> speck = small;
   for (int r = 0; r < grid.rows; ++r)
     for (int c = 0; c < grid.cols; ++c) {
       const int l = labels(r, c);
@@ -38,8 +39,7 @@ std::size_t clear_specks(ClassGrid& grid, int max_cells) {
   for (int r = 0; r < grid.rows; ++r)
     for (int c = 0; c < grid.cols; ++c) {
       const int l = labels(r, c);
-      not_large(r, c) = l != 0 && stats(l, cv::CC_STAT_WIDTH) <= max_cells && stats(l, cv::CC_STAT_HEIGHT) <= max_cells ? 255
-                        : l != 0 ? 0 : 255;
+      not_large(r, c) = l == 0 || small[static_cast<std::size_t>(l)] != 0 ? 255 : 0;
     }
   cv::Mat1f to_large;
   cv::distanceTransform(not_large, to_large, cv::DIST_L2, cv::DIST_MASK_PRECISE);
