@@ -99,4 +99,5 @@ TEST_CASE("specks: the kit clears them at --speck-size and says how many", "[ind
   CHECK(cleared({{"speck-size", "0"}}) == 0);
   CHECK(cleared({{"speck-size", "0.04"}}) == 0);  // under one cell
   CHECK_THROWS_AS(cleared({{"speck-size", "-1"}}), ksmc::runtime::cli::UsageError);
+  CHECK(cleared({{"speck-size", "1e300"}}) >= placed);  // capped at the map's size, no overflow
 }

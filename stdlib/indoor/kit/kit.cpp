@@ -258,7 +258,9 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
   const double res = map->resolution;
   const double speck_size = in.flags.real("speck-size");
   if (!(speck_size >= 0.0) || !std::isfinite(speck_size)) throw cli::UsageError("--speck-size must be >= 0 metres");
-  const int speck_cells = static_cast<int>(std::floor(speck_size / res + 1e-9));
+  // At most the map's larger side: a huge --speck-size must not overflow the cell count.
+  const int speck_cells = static_cast<int>(
+      std::min(std::floor(speck_size / res + 1e-9), static_cast<double>(std::max(map->rows(), map->cols()))));
   cli::stage(in, "clearing specks");
   const std::size_t specks_cleared = clear_specks(map->grid, speck_cells);
   const double solid_depth = in.flags.real("solid-depth");
