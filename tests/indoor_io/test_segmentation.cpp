@@ -514,3 +514,59 @@ TEST_CASE("segmentation: a corridor between walls 0.3 m thick, turned by 5 to 40
         CHECK(corridor.count(0) == 0);
       }
 }
+
+TEST_CASE("segmentation: a corridor is not cut where the partitions on both sides line up, a door frame cuts it") {
+  // 0.05 m cells, walls 2 cells thick. A 2 m corridor (rows 42-81, cols 2-161) between two rows
+  // of offices (rows 2-39 and 84-121), whose partitions (cols 80-81) line up across it. Each
+  // office opens to the corridor through a 0.9 m door.
+  ClassGrid g(124, 164, static_cast<std::uint8_t>(Cell::Occupied));
+  for (int r = 2; r <= 121; ++r)
+    for (int c = 2; c <= 161; ++c) {
+      const bool wall_row = r == 40 || r == 41 || r == 82 || r == 83;
+      const bool door = (c >= 30 && c <= 47) || (c >= 110 && c <= 127);
+      const bool partition = (c == 80 || c == 81) && (r <= 41 || r >= 82);
+      if (!partition && (!wall_row || door)) g(r, c) = static_cast<std::uint8_t>(Cell::Free);
+    }
+  WorldResult w;
+  w.map.resolution = 0.05;
+  w.units = {unit(1, 1.5, 41.5, 161.5, 81.5), unit(2, 1.5, 1.5, 79.5, 39.5), unit(3, 81.5, 1.5, 161.5, 39.5),
+             unit(4, 1.5, 83.5, 79.5, 121.5), unit(5, 81.5, 83.5, 161.5, 121.5)};
+  cv::Mat1w s = render_segmentation(g, w);
+  CHECK(s(60, 20) == 1);
+  CHECK(s(60, 140) == 1);  // one corridor across the partitions' line
+  CHECK(s(20, 40) == 2);
+  CHECK(s(20, 120) == 3);
+  CHECK(s(100, 40) == 4);
+  CHECK(s(100, 120) == 5);
+  // A door frame in the corridor on that line (stubs 0.5 m long from each side, a 1 m opening)
+  // cuts it in two.
+  fill_wall(g, 42, 51, 80, 81);
+  fill_wall(g, 72, 81, 80, 81);
+  s = render_segmentation(g, w);
+  CHECK(s(60, 20) != s(60, 140));
+  CHECK(std::min(s(60, 20), s(60, 140)) == 1);
+}
+
+TEST_CASE("segmentation: a side passage whose unit runs on through the corridor it opens into stays its own segment") {
+  // 0.05 m cells. A 2 m corridor (cols 100-139, rows 2-161) and a 1.5 m side passage (rows
+  // 60-89, cols 2-97) opening into it through the corridor's wall (cols 98-99) over its whole
+  // width. The passage's unit runs on through the corridor to its far wall (as the chain draws
+  // a side passage at a T-junction). Beyond the cut in the corridor's wall line the passage
+  // is not walled, so the cut stays.
+  // Walls 2 cells thick, unknown space beyond them.
+  ClassGrid g(164, 142, static_cast<std::uint8_t>(Cell::Unknown));
+  fill_wall(g, 0, 163, 98, 141);
+  fill_wall(g, 58, 91, 0, 99);
+  for (int r = 2; r <= 161; ++r)
+    for (int c = 100; c <= 139; ++c) g(r, c) = static_cast<std::uint8_t>(Cell::Free);
+  for (int r = 60; r <= 89; ++r)
+    for (int c = 2; c <= 99; ++c) g(r, c) = static_cast<std::uint8_t>(Cell::Free);
+  WorldResult w;
+  w.map.resolution = 0.05;
+  w.units = {unit(1, 99.5, 1.5, 139.5, 161.5), unit(2, 1.5, 59.5, 139.5, 89.5)};
+  const cv::Mat1w s = render_segmentation(g, w);
+  CHECK(s(75, 40) != 0);
+  CHECK(s(20, 120) != 0);
+  CHECK(s(75, 40) != s(20, 120));
+  CHECK(s(150, 120) == s(20, 120));
+}

@@ -14,6 +14,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "runtime/io/atomic_file.h"
+#include "stdlib/indoor/io/corridor_shape.h"
 #include "stdlib/indoor/io/doorway_spaces.h"
 #include "stdlib/indoor/io/quad.h"
 #include "stdlib/indoor/io/thin_walls.h"  // kMaxWallThickness
@@ -139,22 +140,8 @@ constexpr double kOpenJoin = 2.0;           // m of free contact
 constexpr double kOpenCore = 0.5;           // m of contact in open_core, for two units
 constexpr double kWallShare = 0.25;         // wall runs / free contact pairs, for two units
 constexpr double kMaxJoinedPiece = 20.0;    // m^2, for two units
-constexpr double kNarrowUnit = 2.6;         // m across: a corridor (`Narrow` in domains/indoor.ksm)
 constexpr double kEndShare = 0.75;          // of the narrower unit's width, for two corridor-shaped units
 constexpr double kDoorWidth = 1.2;          // m: a contact no wider is a doorway
-
-constexpr double kLongUnit = 4.0;           // m across, at least kLongRatio times as long: a corridor
-constexpr double kLongRatio = 3.0;          // (Table 3.6's corridor: geom.corridor_like)
-
-// The width of a corridor-shaped unit in cells: its shorter side when it is under kNarrowUnit,
-// or under kLongUnit and kLongRatio times as long; infinity otherwise (and for a degenerate quad).
-double corridor_width(const Quad& q, double res) {
-  constexpr double kNot = std::numeric_limits<double>::infinity();
-  if (!finite_quad(q)) return kNot;
-  const double a = std::hypot(q[1].x - q[0].x, q[1].y - q[0].y), b = std::hypot(q[2].x - q[1].x, q[2].y - q[1].y);
-  const double w = std::min(a, b) * res, l = std::max(a, b) * res;
-  return w < kNarrowUnit || (w < kLongUnit && l >= kLongRatio * w) ? std::min(a, b) : kNot;
-}
 
 using PairCount = std::map<std::pair<int, int>, long>;  // (smaller, larger id) -> count
 
@@ -402,7 +389,7 @@ cv::Mat1w render_segmentation(const ClassGrid& grid, const WorldResult& w) {
   label_unreached_components(grid, w.map.resolution, label);
   const cv::Mat1w before_join = label.clone();
   merge_open_spaces(grid, w, label);
-  split_at_wall_gaps(grid, w.map.resolution, label, &before_join, dominant_wall_angle(w));
+  split_at_wall_gaps(grid, w.map.resolution, label, &before_join, dominant_wall_angle(w), &w.units);
   fill_furniture(grid, w, label);
   return label;
 }

@@ -42,7 +42,10 @@
 //     office open to its corridor over 2-3 m between wall stubs gets its own id (the stubs'
 //     blobs span at least 1 m: chairs in a row round a table are no wall line); thin
 //     partitions at any angle cut at the gaps between their pieces and at the doorway (up to
-//     1.4 m) beyond a free end (split_at_wall_gaps, wall_gap_cuts.h, thin_walls.h). A piece
+//     1.4 m) beyond a free end (split_at_wall_gaps, wall_gap_cuts.h, thin_walls.h). A cut
+//     across a corridor-shaped unit from wall to wall, inside it and walled on both sides, is
+//     none: a corridor continues where the partitions of the rooms beside it line up across it
+//     (a door frame's stubs narrow it, and that cut stays). A piece
 //     cut off a joined segment gets back the id of the unit its cells mostly were, when no
 //     other segment has it, else a new id;
 //   * an occupied 8-connected blob of at most 4 m^2, off the map's edge, whose 4-neighbours are

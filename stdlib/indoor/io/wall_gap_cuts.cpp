@@ -4,12 +4,15 @@
 #include <cmath>
 #include <cstdint>
 #include <deque>
+#include <limits>
 #include <map>
 #include <vector>
 
 #include <opencv2/imgproc.hpp>
 
 #include "stdlib/indoor/cell.h"
+#include "stdlib/indoor/io/corridor_shape.h"
+#include "stdlib/indoor/io/quad.h"
 #include "stdlib/indoor/detect/orientation.h"
 #include "stdlib/indoor/io/thin_walls.h"
 
@@ -24,6 +27,9 @@ constexpr double kMinWallPiece = 1.0;      // m: the longer side of the bounding
 constexpr double kAlignedAngle = 1.0 * CV_PI / 180.0;  // rad: walls within 1 degree of the rows and columns are scanned along them
 constexpr double kNearDirection = 3.0;  // degrees: units this close to the main direction share it
 constexpr double kMinShare = 0.85;      // of the units' area in the main direction: the building has one frame
+constexpr double kCorridorSpan = 0.75;     // of a corridor-shaped unit's width, and within kSideSlack of
+constexpr double kSideSlack = 0.15;        // m of each side: a cut across it from side to side, no door frame
+constexpr double kMaxCrossCut = 0.5;       // m along the corridor: a cut line, not a band
 constexpr double kMaxEndGap = 1.4;         // m from a thin wall's end to the wall it points at: a door (1.2 m) and the Hough end's slack, under a corridor's width
 
 struct Cuts {
@@ -234,6 +240,98 @@ cv::Mat1b aligned_scan_cuts(const ClassGrid& grid, const cv::Mat1w& label, const
   return back;
 }
 
+// A corridor continues (split_at_wall_gaps in wall_gap_cuts.h): the 8-connected pieces of `cut`
+// that cross a corridor-shaped unit from side to side are erased. A piece crosses unit u when at
+// least 90 % of its cells lie in u (or within 2 cells of it), its cells span u's width across u
+// but for kSideSlack at each side (the slack of the unit's edges; a door frame's stubs narrow the
+// corridor more) and at least kCorridorSpan of it, and at most kMaxCrossCut along it, with u
+// going on for at least its width beyond the piece at both ends, and walled there: on each side
+// of the piece, at least a third of the cross-sections 1/2 to 3/2 widths away (one per cell) are
+// free runs from wall to wall no longer than u's width and the slack (doors in the corridor's
+// walls open the others). A cut where a corridor piece
+// ends in a crossing corridor, or opens into a room, stays (NLB: a side passage whose unit runs
+// on through the main corridor is a room of its own).
+void keep_corridors_whole(const ClassGrid& grid, cv::Mat1b& cut, const std::vector<UnitResult>& units, double res) {
+  struct Corridor {
+    Quad q;
+    Point2 across, along;  // unit vectors: the short side's direction, the long side's
+    double width;          // cells
+    double end0, end1;     // the unit's ends, as coordinates along `along`
+  };
+  std::vector<Corridor> corridors;
+  for (const auto& u : units) {
+    const double w = corridor_width(u.corners, res);
+    if (!std::isfinite(w)) continue;
+    const auto& q = u.corners;
+    Point2 e1{q[1].x - q[0].x, q[1].y - q[0].y}, e2{q[2].x - q[1].x, q[2].y - q[1].y};
+    const double l1 = std::hypot(e1.x, e1.y), l2 = std::hypot(e2.x, e2.y);
+    e1 = {e1.x / l1, e1.y / l1};
+    e2 = {e2.x / l2, e2.y / l2};
+    Corridor co = l1 <= l2 ? Corridor{q, e1, e2, w, 0.0, 0.0} : Corridor{q, e2, e1, w, 0.0, 0.0};
+    co.end0 = std::numeric_limits<double>::infinity();
+    co.end1 = -co.end0;
+    for (const Point2& p : q) {
+      const double t = p.x * co.along.x + p.y * co.along.y;
+      co.end0 = std::min(co.end0, t), co.end1 = std::max(co.end1, t);
+    }
+    corridors.push_back(co);
+  }
+  if (corridors.empty()) return;
+  cv::Mat1i ids, stats;
+  cv::Mat centroids;
+  const int n = cv::connectedComponentsWithStats(cut, ids, stats, centroids, 8, CV_32S);
+  const double max_along = kMaxCrossCut / res, slack = 2.0 * kSideSlack / res;
+  const auto is_free = [&grid](const Point2& p) {
+    const int r = static_cast<int>(std::lround(p.y)), c = static_cast<int>(std::lround(p.x));
+    return r >= 0 && c >= 0 && r < grid.rows && c < grid.cols && grid(r, c) == static_cast<std::uint8_t>(Cell::Free);
+  };
+  // The free run across co through p, in cells; infinity past the limit.
+  const auto cross_run = [&](const Corridor& co, Point2 p, double limit) {
+    if (!is_free(p)) return std::numeric_limits<double>::infinity();
+    double run = 1.0;
+    for (const int s : {-1, 1})
+      for (double k = 1.0; is_free({p.x + s * k * co.across.x, p.y + s * k * co.across.y}); k += 1.0)
+        if (++run > limit) return std::numeric_limits<double>::infinity();
+    return run;
+  };
+  const auto walled = [&](const Corridor& co, Point2 centre, int side) {
+    int n = 0, walls = 0;
+    for (double k = 0.5 * co.width; k <= 1.5 * co.width; k += 1.0, ++n) {
+      const Point2 p{centre.x + side * k * co.along.x, centre.y + side * k * co.along.y};
+      if (cross_run(co, p, co.width + slack + 2.0) <= co.width + slack + 2.0) ++walls;
+    }
+    return 3 * walls >= n;
+  };
+  for (int k = 1; k < n; ++k) {
+    const int x0 = stats(k, cv::CC_STAT_LEFT), y0 = stats(k, cv::CC_STAT_TOP);
+    const int x1 = x0 + stats(k, cv::CC_STAT_WIDTH), y1 = y0 + stats(k, cv::CC_STAT_HEIGHT);
+    std::vector<Point2> cells;
+    for (int r = y0; r < y1; ++r)
+      for (int c = x0; c < x1; ++c)
+        if (ids(r, c) == k) cells.push_back({static_cast<double>(c), static_cast<double>(r)});
+    const auto crosses = [&](const Corridor& co) {
+      std::size_t inside = 0;
+      double a0 = std::numeric_limits<double>::infinity(), a1 = -a0, l0 = a0, l1 = -a0;
+      for (const Point2& p : cells) {
+        if (depth_inside(co.q, p) < -2.0) continue;
+        ++inside;
+        const double a = p.x * co.across.x + p.y * co.across.y, l = p.x * co.along.x + p.y * co.along.y;
+        a0 = std::min(a0, a), a1 = std::max(a1, a), l0 = std::min(l0, l), l1 = std::max(l1, l);
+      }
+      const double mid = 0.5 * (l0 + l1);
+      if (!(inside > 0 && 10 * inside >= 9 * cells.size() && a1 - a0 + 1.0 >= std::max(kCorridorSpan * co.width, co.width - slack) &&
+            l1 - l0 + 1.0 <= max_along && std::min(mid - co.end0, co.end1 - mid) >= co.width))
+        return false;
+      const Point2 centre{(a0 + a1) * 0.5 * co.across.x + mid * co.along.x, (a0 + a1) * 0.5 * co.across.y + mid * co.along.y};
+      return walled(co, centre, -1) && walled(co, centre, +1);
+    };
+    if (std::any_of(corridors.begin(), corridors.end(), crosses))
+      for (int r = y0; r < y1; ++r)
+        for (int c = x0; c < x1; ++c)
+          if (ids(r, c) == k) cut(r, c) = 0;
+  }
+}
+
 }  // namespace
 
 double dominant_wall_angle(const WorldResult& w) {
@@ -270,7 +368,7 @@ double dominant_wall_angle(const WorldResult& w) {
 }
 
 void split_at_wall_gaps(const ClassGrid& grid, double resolution, cv::Mat1w& label, const cv::Mat1w* before_join,
-                        double wall_angle) {
+                        double wall_angle, const std::vector<UnitResult>* units) {
   const double res = resolution > 0.0 ? resolution : 0.05;
   const bool aligned = std::abs(wall_angle) < kAlignedAngle;
   // The wall pieces are read only by the row and column scans, which run on this grid when the
@@ -286,6 +384,7 @@ void split_at_wall_gaps(const ClassGrid& grid, double resolution, cv::Mat1w& lab
     cuts.cut |= aligned_scan_cuts(grid, label, cuts, kMinWallPiece / res, wall_angle);
   }
   cuts.cut_lines(thin_wall_lines(grid, res), kMaxEndGap / res, 1.0 / res);
+  if (units != nullptr) keep_corridors_whole(grid, cuts.cut, *units, res);
   // 4-connected pieces of each segment without its cut cells.
   cv::Mat1i piece(label.rows, label.cols, -1);
   std::vector<long> area;

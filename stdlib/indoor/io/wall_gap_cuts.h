@@ -31,6 +31,8 @@
 //     it within 2 cells of its end) has no free end there.
 #pragma once
 
+#include <vector>
+
 #include <opencv2/core/mat.hpp>
 
 #include "stdlib/indoor/io/world_result.h"
@@ -49,8 +51,15 @@ namespace ksmc::stdlib::indoor::io {
 // gives no cut. On the turned map a wall's faces are jagged by a cell, so there the wall beyond
 // a gap's end must be thin across at its last two cells, not at its last one alone: a wall
 // crossing the row, about as thick as kWallRun, is then no wall lying along the row.
+//
+// `units`, when not null: the world's units. A cut that crosses a corridor-shaped unit
+// (corridor_shape.h) from side to side (over its width less 0.15 m at each side, and at least
+// 3/4 of it; a door frame's stubs narrow it more), at most 0.5 m along it and at least the
+// unit's width from both of its ends, with the corridor walled on both sides of it, is no cut: a corridor continues where the partitions of the rooms on both sides line up
+// across it (Freiburg79_scan: its corridor was cut at the first such pair).
 void split_at_wall_gaps(const ClassGrid& grid, double resolution, cv::Mat1w& label,
-                        const cv::Mat1w* before_join = nullptr, double wall_angle = 0.0);
+                        const cv::Mat1w* before_join = nullptr, double wall_angle = 0.0,
+                        const std::vector<UnitResult>* units = nullptr);
 
 // The direction of the units' edges modulo 90 degrees, in radians in [-pi/4, pi/4): of the
 // units' directions, the one with the most unit area within 3 degrees of it, refined to the
