@@ -27,8 +27,8 @@ constexpr double kMinWallPiece = 1.0;      // m: the longer side of the bounding
 constexpr double kAlignedAngle = 1.0 * CV_PI / 180.0;  // rad: walls within 1 degree of the rows and columns are scanned along them
 constexpr double kNearDirection = 3.0;  // degrees: units this close to the main direction share it
 constexpr double kMinShare = 0.85;      // of the units' area in the main direction: the building has one frame
-constexpr double kCorridorSpan = 0.75;     // of a corridor-shaped unit's width, and within kSideSlack of
-constexpr double kSideSlack = 0.15;        // m of each side: a cut across it from side to side, no door frame
+constexpr double kCorridorSpan = 0.75;     // of a corridor-shaped unit's width: a cut across it spans at least this,
+constexpr double kSideSlack = 0.15;        // m: and reaches this close to each of its sides (a door frame narrows it more)
 constexpr double kMaxCrossCut = 0.5;       // m along the corridor: a cut line, not a band
 constexpr double kMaxEndGap = 1.4;         // m from a thin wall's end to the wall it points at: a door (1.2 m) and the Hough end's slack, under a corridor's width
 
@@ -248,9 +248,9 @@ cv::Mat1b aligned_scan_cuts(const ClassGrid& grid, const cv::Mat1w& label, const
 // going on for at least its width beyond the piece at both ends, and walled there: on each side
 // of the piece, at least a third of the cross-sections 1/2 to 3/2 widths away (one per cell) are
 // free runs from wall to wall no longer than u's width and the slack (doors in the corridor's
-// walls open the others). A cut where a corridor piece
-// ends in a crossing corridor, or opens into a room, stays (NLB: a side passage whose unit runs
-// on through the main corridor is a room of its own).
+// walls open the others). A cut where a corridor piece ends in a crossing corridor, or opens
+// into a room, stays (NLB: a side passage whose unit runs on through the main corridor is a
+// room of its own).
 void keep_corridors_whole(const ClassGrid& grid, cv::Mat1b& cut, const std::vector<UnitResult>& units, double res) {
   struct Corridor {
     Quad q;
@@ -295,12 +295,12 @@ void keep_corridors_whole(const ClassGrid& grid, cv::Mat1b& cut, const std::vect
     return run;
   };
   const auto walled = [&](const Corridor& co, Point2 centre, int side) {
-    int n = 0, walls = 0;
-    for (double k = 0.5 * co.width; k <= 1.5 * co.width; k += 1.0, ++n) {
+    int samples = 0, walls = 0;
+    for (double k = 0.5 * co.width; k <= 1.5 * co.width; k += 1.0, ++samples) {
       const Point2 p{centre.x + side * k * co.along.x, centre.y + side * k * co.along.y};
       if (cross_run(co, p, co.width + slack + 2.0) <= co.width + slack + 2.0) ++walls;
     }
-    return 3 * walls >= n;
+    return 3 * walls >= samples;
   };
   for (int k = 1; k < n; ++k) {
     const int x0 = stats(k, cv::CC_STAT_LEFT), y0 = stats(k, cv::CC_STAT_TOP);
