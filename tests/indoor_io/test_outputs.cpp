@@ -333,16 +333,21 @@ TEST_CASE("world.json reads back into the same result") {
   const OccupancyMap map = load_map_yaml(kExample / "sim_office.yaml");
   WorldResult w = sample_result(map);
   w.trace.clear();
+  w.map.cleanup = {2, 10.5};
   TempDir dir("readback");
   write_world_json(dir / "world.json", w);
   const WorldResult r = read_world_json(dir / "world.json");
   CHECK(world_json_text(r) == world_json_text(w));
+  CHECK(r.map.cleanup.speck_cells == 2);
+  CHECK(r.map.cleanup.solid_depth_cells == 10.5);
   // The committed ground truth parses too (metrics empty).
   const WorldResult t = read_world_json(kExample / "sim_office_truth.json");
   CHECK(t.units.size() == 8);
   CHECK(t.doors.size() == 8);
   CHECK(t.metrics.empty());
   CHECK(t.map.counts.free > 0);
+  CHECK(t.map.cleanup.speck_cells == 0);  // no map.cleanup: the map as loaded
+  CHECK(t.map.cleanup.solid_depth_cells == 0.0);
 }
 
 TEST_CASE("bad world.json names the file and the place") {
@@ -357,5 +362,10 @@ TEST_CASE("bad world.json names the file and the place") {
   CHECK_THROWS_WITH(parse_world_json(base + R"("units":[],"doors":[{"id":1,"units":[1,2],"segment":[[0,0],[1,1]]}]})", "w.json"),
                     Catch::Contains("door 1"));
   CHECK_THROWS_WITH(parse_world_json(R"({"units":[]})", "w.json"), Catch::Contains("'map'"));
+  const std::string cleanup = R"({"map":{"source":"m","width":10,"height":10,"resolution":0.05,"origin":[0,0,0],"cleanup":)";
+  CHECK_THROWS_WITH(parse_world_json(cleanup + R"({"speck_cells":-1,"solid_depth_cells":0}},"units":[],"doors":[]})", "w.json"),
+                    Catch::Contains("map.cleanup.speck_cells"));
+  CHECK_THROWS_WITH(parse_world_json(cleanup + R"({"speck_cells":2}},"units":[],"doors":[]})", "w.json"),
+                    Catch::Contains("solid_depth_cells"));
   CHECK_THROWS_AS(read_world_json("/nonexistent/world.json"), WorldJsonError);
 }

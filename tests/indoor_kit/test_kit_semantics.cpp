@@ -8,8 +8,8 @@
 
 #include "stdlib/indoor/blocks/walls.h"
 #include "stdlib/indoor/free_distance.h"
+#include "stdlib/indoor/io/specks.h"
 #include "stdlib/indoor/kit/semantic_layer.h"
-#include "stdlib/indoor/kit/specks.h"
 #include "stdlib/indoor/map_evidence.h"
 #include "tests/indoor_kit/binding.h"
 
@@ -154,7 +154,7 @@ TEST_CASE("open_join: a speck on the join of two corridor pieces is no wall once
   // The longest free run is 25 cells (1.25 m), under 3/4 of the 40 and under 2 m: not open.
   CHECK(!blk::geom::open_join(raw, raw.rect(0), raw.rect(1), 2.0, 2.0, 0.75, 1.2));
   ClassGrid cleared = map.clone();
-  CHECK(clear_specks(cleared, 2) == 1);
+  CHECK(io::clear_specks(cleared, 2) == 1);
   const blk::Scene sc(w, 0.05, &cleared);
   CHECK(blk::geom::open_join(sc, sc.rect(0), sc.rect(1), 2.0, 2.0, 0.75, 1.2));
 }

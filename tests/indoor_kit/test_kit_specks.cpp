@@ -9,7 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "runtime/cli/domain_spec.h"
-#include "stdlib/indoor/kit/specks.h"
+#include "stdlib/indoor/io/specks.h"
 #include "tests/indoor/synthetic_map.h"
 #include "tests/indoor_kit/kit_fixture.h"
 
@@ -31,9 +31,9 @@ TEST_CASE("specks: single cells and 2 x 2 blobs in open floor become free", "[in
   cv::rectangle(g, cv::Point(10, 30), cv::Point(12, 32), cv::Scalar(occ), cv::FILLED);  // 3 x 3: a pillar
   g(26, 30) = occ;                                                                      // a cell off the wall end, touching it
   ClassGrid orig = g.clone();
-  CHECK(kit::clear_specks(g, 0) == 0);
+  CHECK(io::clear_specks(g, 0) == 0);
   CHECK(cv::countNonZero(g != orig) == 0);
-  const std::size_t changed = kit::clear_specks(g, 2);
+  const std::size_t changed = io::clear_specks(g, 2);
   CHECK(changed == 1 + 2 + 4);
   CHECK(static_cast<int>(changed) == cv::countNonZero(g != orig));
   CHECK(g(10, 10) == fr);
@@ -45,7 +45,7 @@ TEST_CASE("specks: single cells and 2 x 2 blobs in open floor become free", "[in
   CHECK(g(26, 30) == occ);  // joined to the wall: one region, not small
   CHECK(g(0, 5) == occ);    // the outer wall
   // With 3 cells the pillar is a speck too.
-  CHECK(kit::clear_specks(g, 3) == 9);
+  CHECK(io::clear_specks(g, 3) == 9);
 }
 
 TEST_CASE("specks: a dot within twice the size of a wall is a fragment of it, not a speck", "[indoor_kit]") {
@@ -58,7 +58,7 @@ TEST_CASE("specks: a dot within twice the size of a wall is a fragment of it, no
   g(10, 40) = occ;
   g(10, 45) = occ;  // 5 cells from the dot at 40, which is small too: no wall near
   g(14, 10) = occ;
-  CHECK(kit::clear_specks(g, 2) == 2);
+  CHECK(io::clear_specks(g, 2) == 2);
   CHECK(g(10, 23) == occ);
   CHECK(g(14, 10) == occ);
   CHECK(g(10, 40) == fr);
@@ -71,7 +71,7 @@ TEST_CASE("specks: a small region beside unexplored cells or the map's edge stay
   g(9, 5) = occ;   // beside the unexplored part
   g(0, 12) = occ;  // on the map's edge
   g(4, 4) = occ;   // in open floor
-  CHECK(kit::clear_specks(g, 2) == 1);
+  CHECK(io::clear_specks(g, 2) == 1);
   CHECK(g(9, 5) == occ);
   CHECK(g(0, 12) == occ);
   CHECK(g(4, 4) == fr);

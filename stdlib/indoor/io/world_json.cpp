@@ -91,6 +91,8 @@ ordered_json world_to_json(const WorldResult& w) {
   map["cells"] = ordered_json{{"free", w.map.counts.free},
                               {"unknown", w.map.counts.unknown},
                               {"occupied", w.map.counts.occupied}};
+  map["cleanup"] = ordered_json{{"speck_cells", w.map.cleanup.speck_cells},
+                                {"solid_depth_cells", number(w.map.cleanup.solid_depth_cells)}};
 
   // Every position in cells (image convention, world_result.h) and in map-frame metres
   // (map_frame.h): *_m keys.

@@ -98,6 +98,14 @@ WorldResult parse_world_json(const std::string& text, const std::string& name) {
     };
     w.map.counts = {count("free"), count("unknown"), count("occupied")};
   }
+  if (map.contains("cleanup")) {  // absent in world.json files written before it was recorded: none
+    const json& cleanup = map["cleanup"];
+    w.map.cleanup.speck_cells = r.integer(r.field(cleanup, "map.cleanup", "speck_cells"), "map.cleanup.speck_cells");
+    w.map.cleanup.solid_depth_cells =
+        r.number(r.field(cleanup, "map.cleanup", "solid_depth_cells"), "map.cleanup.solid_depth_cells");
+    if (w.map.cleanup.speck_cells < 0) r.fail("map.cleanup.speck_cells", "must not be negative");
+    if (!(w.map.cleanup.solid_depth_cells >= 0.0)) r.fail("map.cleanup.solid_depth_cells", "must not be negative");
+  }
   const json& units = r.array(r.field(root, "(top level)", "units"), "units");
   for (std::size_t i = 0; i < units.size(); ++i) {
     const std::string at = "units[" + std::to_string(i) + "]";

@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "stdlib/indoor/io/map_cleanup.h"
 #include "stdlib/indoor/io/occupancy_map.h"
 #include "stdlib/indoor/rect.h"
 
@@ -41,7 +42,8 @@ struct MapInfo {
   int height = 0;                    // cells (rows)
   double resolution = 0.05;          // m per cell
   Pose2 origin;
-  ClassCounts counts;
+  ClassCounts counts;                // of the map after `cleanup`
+  MapCleanup cleanup;                // what the run did to the loaded classes (map_cleanup.h)
 };
 
 struct TraceSample {

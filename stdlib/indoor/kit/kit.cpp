@@ -19,6 +19,7 @@
 #include "stdlib/indoor/detect/orientation.h"
 #include "stdlib/indoor/detect/rpb.h"
 #include "stdlib/indoor/detect/wbu.h"
+#include "stdlib/indoor/io/map_cleanup.h"
 #include "stdlib/indoor/io/map_frame.h"
 #include "stdlib/indoor/io/map_loader.h"
 #include "stdlib/indoor/io/posterior_plot.h"
@@ -27,8 +28,6 @@
 #include "stdlib/indoor/free_distance.h"
 #include "stdlib/indoor/kit/after_run.h"
 #include "stdlib/indoor/kit/indoor_model.h"
-#include "stdlib/indoor/kit/solid_interior.h"
-#include "stdlib/indoor/kit/specks.h"
 #include "stdlib/indoor/blocks/walls.h"
 
 namespace ksmc::stdlib::indoor::kit {
@@ -261,12 +260,12 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
   // At most the map's larger side: a huge --speck-size must not overflow the cell count.
   const int speck_cells = static_cast<int>(
       std::min(std::floor(speck_size / res + 1e-9), static_cast<double>(std::max(map->rows(), map->cols()))));
-  cli::stage(in, "clearing specks");
-  const std::size_t specks_cleared = clear_specks(map->grid, speck_cells);
   const double solid_depth = in.flags.real("solid-depth");
   if (!(solid_depth >= 0.0) || !std::isfinite(solid_depth)) throw cli::UsageError("--solid-depth must be >= 0 metres");
-  cli::stage(in, "classifying solid interiors");
-  const std::size_t solid_cells = unexplain_solid_interior(map->grid, solid_depth / res);
+  const io::MapCleanup cleanup{speck_cells, solid_depth / res};
+  cli::stage(in, "clearing specks and classifying solid interiors");
+  const io::CleanupCounts cleaned = io::apply_cleanup(map->grid, cleanup);
+  const std::size_t specks_cleared = cleaned.specks_cleared, solid_cells = cleaned.solid_unexplained;
   runtime::io::throw_if_cancelled("indoor: after the solid interior");
   shared->grid = map->grid;
   shared->resolution = res;
@@ -319,13 +318,14 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
   const std::string source = path.filename().string();
   std::optional<std::pair<Point2, Point2>> route;  // --path start and goal, cells
   if (in.flags.given("path")) route = parse_path(in.flags.text("path"), *map);
-  setup.write_results = [map, source, route](const mcmc::RunResult& run, mcmc::Model& best, cli::OutputDir& out) {
+  setup.write_results = [map, source, route, cleanup](const mcmc::RunResult& run, mcmc::Model& best, cli::OutputDir& out) {
     auto& m = static_cast<IndoorModel&>(best);
     auto posterior = posterior_worlds(m, run);  // restores the best state when done
     const auto search_start = std::chrono::steady_clock::now();
     const AfterRunResult after = improve_after_run(m);
     const double search_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - search_start).count();
     io::WorldResult result = make_result(m, *map, source, run);
+    result.map.cleanup = cleanup;
     result.posterior = std::move(posterior);
     result.metrics["units_removed_after_run"] = static_cast<double>(after.removed.size());
     result.metrics["units_merged_after_run"] = static_cast<double>(after.merged.size());

@@ -13,9 +13,9 @@
 
 #include "stdlib/indoor/cell.h"
 
-namespace ksmc::stdlib::indoor::kit {
+namespace ksmc::stdlib::indoor::io {
 
 // Returns the number of cells changed from Occupied to Unknown.
 std::size_t unexplain_solid_interior(ClassGrid& grid, double depth_cells);
 
-}  // namespace ksmc::stdlib::indoor::kit
+}  // namespace ksmc::stdlib::indoor::io

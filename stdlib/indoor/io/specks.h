@@ -15,9 +15,9 @@
 
 #include "stdlib/indoor/cell.h"
 
-namespace ksmc::stdlib::indoor::kit {
+namespace ksmc::stdlib::indoor::io {
 
 // Returns the number of cells changed from Occupied to Free.
 std::size_t clear_specks(ClassGrid& grid, int max_cells);
 
-}  // namespace ksmc::stdlib::indoor::kit
+}  // namespace ksmc::stdlib::indoor::io

@@ -1,10 +1,10 @@
-#include "stdlib/indoor/kit/specks.h"
+#include "stdlib/indoor/io/specks.h"
 
 #include <vector>
 
 #include <opencv2/imgproc.hpp>
 
-namespace ksmc::stdlib::indoor::kit {
+namespace ksmc::stdlib::indoor::io {
 
 std::size_t clear_specks(ClassGrid& grid, int max_cells) {
   if (max_cells < 1 || grid.empty()) return 0;
@@ -57,4 +57,4 @@ std::size_t clear_specks(ClassGrid& grid, int max_cells) {
   return changed;
 }
 
-}  // namespace ksmc::stdlib::indoor::kit
+}  // namespace ksmc::stdlib::indoor::io

@@ -4,20 +4,20 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "stdlib/indoor/kit/solid_interior.h"
+#include "stdlib/indoor/io/solid_interior.h"
 
 using namespace ksmc::stdlib::indoor;
 
-TEST_CASE("solid interior: occupied cells deeper than the depth become unexplained", "[indoor_kit]") {
+TEST_CASE("solid interior: occupied cells deeper than the depth become unexplained", "[indoor_io]") {
   const auto occ = static_cast<std::uint8_t>(Cell::Occupied), unk = static_cast<std::uint8_t>(Cell::Unknown),
              fr = static_cast<std::uint8_t>(Cell::Free);
   ClassGrid g(60, 80, occ);                                                   // all black
   cv::rectangle(g, cv::Point(20, 20), cv::Point(49, 39), cv::Scalar(fr), cv::FILLED);  // free room
   cv::rectangle(g, cv::Point(70, 0), cv::Point(79, 59), cv::Scalar(unk), cv::FILLED);  // grey strip
   ClassGrid orig = g.clone();
-  CHECK(kit::unexplain_solid_interior(g, 0.0) == 0);
+  CHECK(io::unexplain_solid_interior(g, 0.0) == 0);
   CHECK(cv::countNonZero(g != orig) == 0);
-  const std::size_t changed = kit::unexplain_solid_interior(g, 3.0);
+  const std::size_t changed = io::unexplain_solid_interior(g, 3.0);
   CHECK(changed > 0);
   CHECK(static_cast<int>(changed) == cv::countNonZero(g != orig));
   // Walls around the room (distance 1..3) stay occupied; beyond 3 cells they are unexplained.
@@ -32,5 +32,5 @@ TEST_CASE("solid interior: occupied cells deeper than the depth become unexplain
   // Thin walls between two rooms are untouched.
   ClassGrid two(30, 60, fr);
   cv::rectangle(two, cv::Point(28, 0), cv::Point(31, 29), cv::Scalar(occ), cv::FILLED);  // 4-cell wall
-  CHECK(kit::unexplain_solid_interior(two, 2.0) == 0);
+  CHECK(io::unexplain_solid_interior(two, 2.0) == 0);
 }

@@ -1,8 +1,8 @@
-#include "stdlib/indoor/kit/solid_interior.h"
+#include "stdlib/indoor/io/solid_interior.h"
 
 #include <opencv2/imgproc.hpp>
 
-namespace ksmc::stdlib::indoor::kit {
+namespace ksmc::stdlib::indoor::io {
 
 std::size_t unexplain_solid_interior(ClassGrid& grid, double depth_cells) {
   if (!(depth_cells > 0.0) || grid.empty()) return 0;
@@ -22,4 +22,4 @@ std::size_t unexplain_solid_interior(ClassGrid& grid, double depth_cells) {
   return changed;
 }
 
-}  // namespace ksmc::stdlib::indoor::kit
+}  // namespace ksmc::stdlib::indoor::io
