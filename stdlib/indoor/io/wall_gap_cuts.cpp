@@ -240,17 +240,19 @@ cv::Mat1b aligned_scan_cuts(const ClassGrid& grid, const cv::Mat1w& label, const
   return back;
 }
 
-// A corridor continues (split_at_wall_gaps in wall_gap_cuts.h): the 8-connected pieces of `cut`
-// that cross a corridor-shaped unit from side to side are erased. A piece crosses unit u when at
-// least 90 % of its cells lie in u (or within 2 cells of it), its cells span u's width across u
-// but for kSideSlack at each side (the slack of the unit's edges; a door frame's stubs narrow the
-// corridor more) and at least kCorridorSpan of it, and at most kMaxCrossCut along it, with u
-// going on for at least its width beyond the piece at both ends, and walled there: on each side
-// of the piece, at least a third of the cross-sections 1/2 to 3/2 widths away (one per cell) are
-// free runs from wall to wall no longer than u's width and the slack (doors in the corridor's
-// walls open the others). A cut where a corridor piece ends in a crossing corridor, or opens
-// into a room, stays (NLB: a side passage whose unit runs on through the main corridor is a
-// room of its own).
+// A corridor continues (split_at_wall_gaps in wall_gap_cuts.h): where an 8-connected piece of
+// `cut` crosses a corridor-shaped unit from side to side, the crossing is erased. A piece crosses
+// unit u when at least 90 % of its cells lie in u (or within 2 cells of it) and a strand of them
+// (its cells in u within kMaxCrossCut along u) spans u's width across u but for kSideSlack at each
+// side (the slack of the unit's edges; a door frame's stubs narrow the corridor more) and at least
+// kCorridorSpan of it, with u going on for at least its width beyond the strand at both ends, and
+// walled there: on each side, at least a third of the cross-sections 1/2 to 3/2 widths away (one
+// per cell) are free runs from wall to wall no longer than u's width and the slack (doors in the
+// corridor's walls open the others). A piece that is its strand is erased whole; of a longer
+// piece (a cut across that touches the cuts of door gaps in the corridor's walls at its ends:
+// Freiburg79_scan once its specks are cleared) only the strand. A cut where a corridor piece ends
+// in a crossing corridor, or opens into a room, stays (NLB: a side passage whose unit runs on
+// through the main corridor is a room of its own).
 void keep_corridors_whole(const ClassGrid& grid, cv::Mat1b& cut, const std::vector<UnitResult>& units, double res) {
   struct Corridor {
     Quad q;
@@ -309,26 +311,57 @@ void keep_corridors_whole(const ClassGrid& grid, cv::Mat1b& cut, const std::vect
     for (int r = y0; r < y1; ++r)
       for (int c = x0; c < x1; ++c)
         if (ids(r, c) == k) cells.push_back({static_cast<double>(c), static_cast<double>(r)});
-    const auto crosses = [&](const Corridor& co) {
-      std::size_t inside = 0;
+    // Whether `part` (cells of the piece in co) crosses co; see above.
+    const auto crosses = [&](const Corridor& co, const std::vector<Point2>& part) {
       double a0 = std::numeric_limits<double>::infinity(), a1 = -a0, l0 = a0, l1 = -a0;
-      for (const Point2& p : cells) {
-        if (depth_inside(co.q, p) < -2.0) continue;
-        ++inside;
+      for (const Point2& p : part) {
         const double a = p.x * co.across.x + p.y * co.across.y, l = p.x * co.along.x + p.y * co.along.y;
         a0 = std::min(a0, a), a1 = std::max(a1, a), l0 = std::min(l0, l), l1 = std::max(l1, l);
       }
       const double mid = 0.5 * (l0 + l1);
-      if (!(inside > 0 && 10 * inside >= 9 * cells.size() && a1 - a0 + 1.0 >= std::max(kCorridorSpan * co.width, co.width - slack) &&
-            l1 - l0 + 1.0 <= max_along && std::min(mid - co.end0, co.end1 - mid) >= co.width))
+      if (part.empty() || a1 - a0 + 1.0 < std::max(kCorridorSpan * co.width, co.width - slack) ||
+          l1 - l0 + 1.0 > max_along || std::min(mid - co.end0, co.end1 - mid) < co.width)
         return false;
       const Point2 centre{(a0 + a1) * 0.5 * co.across.x + mid * co.along.x, (a0 + a1) * 0.5 * co.across.y + mid * co.along.y};
       return walled(co, centre, -1) && walled(co, centre, +1);
     };
-    if (std::any_of(corridors.begin(), corridors.end(), crosses))
-      for (int r = y0; r < y1; ++r)
-        for (int c = x0; c < x1; ++c)
-          if (ids(r, c) == k) cut(r, c) = 0;
+    // The piece is erased when its cells in co cross it. Else its strands are: runs of
+    // consecutive cross-sections of co (one per cell along it) in which its cells fill at least
+    // half of co's width: a cut across that touches the cuts of door gaps in the corridor's
+    // walls at its ends (8-connected) has the cut across as its strand, and the door gaps fill
+    // one or two cells of a cross-section.
+    const auto erase_crossings = [&](const Corridor& co) {
+      std::vector<Point2> inside;
+      for (const Point2& p : cells)
+        if (depth_inside(co.q, p) >= -2.0) inside.push_back(p);
+      if (inside.empty() || 10 * inside.size() < 9 * cells.size()) return false;
+      if (crosses(co, inside)) {  // with its few cells outside co
+        for (const Point2& p : cells) cut(static_cast<int>(p.y), static_cast<int>(p.x)) = 0;
+        return true;
+      }
+      std::map<long, std::vector<Point2>> section;  // along co, rounded -> the piece's cells there
+      for (const Point2& p : inside) section[std::lround(p.x * co.along.x + p.y * co.along.y)].push_back(p);
+      const auto full = [&co](const std::vector<Point2>& cs) { return 2.0 * static_cast<double>(cs.size()) >= co.width; };
+      bool erased = false;
+      for (auto it = section.begin(); it != section.end();) {
+        if (!full(it->second)) {
+          ++it;
+          continue;
+        }
+        std::vector<Point2> strand = it->second;
+        auto next = std::next(it);
+        for (; next != section.end() && next->first == std::prev(next)->first + 1 && full(next->second); ++next)
+          strand.insert(strand.end(), next->second.begin(), next->second.end());
+        if (crosses(co, strand)) {
+          for (const Point2& p : strand) cut(static_cast<int>(p.y), static_cast<int>(p.x)) = 0;
+          erased = true;
+        }
+        it = next;
+      }
+      return erased;
+    };
+    for (const Corridor& co : corridors)
+      if (erase_crossings(co)) break;
   }
 }
 
