@@ -299,13 +299,20 @@ TEST_CASE("segmentation: two units in one open room are one segment, unless a wa
   s = render_segmentation(g, w);
   CHECK(s(40, 40) == 3);
   CHECK(s(40, 110) == 8);
-  // No wall, but both units are rooms in their own right (6 m x 4 m, 24 m^2 each): two segments.
+  // No wall, but both units are rooms in their own right (6 m x 4 m and 6 m x 3 m, 24 and 18
+  // m^2; their facing sides differ, 4 m and 3 m): two segments.
   WorldResult big;
   big.map.resolution = 0.05;
-  big.units = {unit(3, 0.5, 0.5, 120.5, 80.5), unit(8, 120.5, 0.5, 240.5, 80.5)};
+  big.units = {unit(3, 0.5, 0.5, 120.5, 80.5), unit(8, 120.5, 20.5, 240.5, 80.5)};
   s = render_segmentation(walled_room(80, 240), big);
   CHECK(s(40, 40) == 3);
   CHECK(s(40, 200) == 8);
+  // Both 6 m x 4 m, meeting over the whole of their 4 m sides with no wall: units that continue
+  // each other (unit_chains.h), one space.
+  big.units[1] = unit(8, 120.5, 0.5, 240.5, 80.5);
+  s = render_segmentation(walled_room(80, 240), big);
+  CHECK(s(40, 40) == 3);
+  CHECK(s(40, 200) == 3);
 }
 
 namespace {
@@ -592,4 +599,29 @@ TEST_CASE("segmentation: a side passage whose unit runs on through the corridor 
   CHECK(s(20, 120) != 0);
   CHECK(s(75, 40) != s(20, 120));
   CHECK(s(150, 120) == s(20, 120));
+}
+
+TEST_CASE("segmentation: units that continue each other are one segment, a wall with a door between them keeps them apart") {
+  // 0.05 m cells. A corridor 1.1 m wide (rows 3-24) and 16 m long (cols 3-322) in unknown space,
+  // walls 3 cells thick, drawn as two units meeting end to end at col 160.5 with one cell of
+  // slack across (as the chain draws them). They meet over the corridor's width, 1.1 m, no
+  // wider than a door: the corridor join does not join them. Their facing sides coincide and
+  // the seam is free: one segment, whose id is one of theirs.
+  ClassGrid g(28, 326, static_cast<std::uint8_t>(Cell::Unknown));
+  fill_wall(g, 0, 27, 0, 325);
+  for (int r = 3; r <= 24; ++r)
+    for (int c = 3; c <= 322; ++c) g(r, c) = static_cast<std::uint8_t>(Cell::Free);
+  WorldResult w;
+  w.map.resolution = 0.05;
+  w.units = {unit(1, 1.5, 1.5, 160.5, 25.5), unit(2, 160.5, 2.0, 324.5, 26.0)};
+  cv::Mat1w s = render_segmentation(g, w);
+  CHECK(s(13, 40) != 0);
+  CHECK(s(13, 40) == s(13, 300));
+  // A wall across at cols 159-161 with a 0.9 m door (rows 5-22): two segments.
+  for (int r = 3; r <= 24; ++r)
+    if (r < 5 || r > 22) fill_wall(g, r, r, 159, 161);
+  s = render_segmentation(g, w);
+  INFO("west " << s(13, 40) << " east " << s(13, 300) << " door " << s(13, 160));
+  CHECK(s(13, 40) == 1);
+  CHECK(s(13, 300) == 2);
 }

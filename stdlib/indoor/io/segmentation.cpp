@@ -18,6 +18,7 @@
 #include "stdlib/indoor/io/doorway_spaces.h"
 #include "stdlib/indoor/io/quad.h"
 #include "stdlib/indoor/io/thin_walls.h"  // kMaxWallThickness
+#include "stdlib/indoor/io/unit_chains.h"
 #include "stdlib/indoor/io/wall_gap_cuts.h"
 #include "stdlib/indoor/io/world_images.h"
 #include "stdlib/indoor/io/world_json.h"
@@ -134,6 +135,9 @@ void label_unreached_components(const ClassGrid& grid, double resolution, cv::Ma
 // rule's 3/4 of the join for a corridor cut across). A corridor in a ring or an L is several
 // rectangles meeting end to side; its contact is the corridor's width, often under 2 m, and too
 // close to the walls for open_core (office_a: a ring in 6 pieces).
+// Units that continue each other (unit_chains.h: facing sides that coincide, an open seam) are
+// one space whatever their contact: a corridor 1.1 m wide in pieces (lab_f_scan) meets its next
+// piece over no more than a door's width.
 // Pairs are joined widest contact first. split_at_wall_gaps runs afterwards and cuts again
 // where a straight wall line with a gap crosses a joined segment.
 constexpr double kOpenJoin = 2.0;           // m of free contact
@@ -233,7 +237,12 @@ void merge_open_spaces(const ClassGrid& grid, const WorldResult& w, cv::Mat1w& l
     return wc == walls.end() || static_cast<double>(wc->second) <= kWallShare * static_cast<double>(n);
   };
   std::vector<std::pair<long, std::pair<int, int>>> joins;
+  // Units that continue each other (unit_chains.h): one space whatever their contact.
+  const std::vector<std::pair<int, int>> continued = continued_units(grid, w.units);
+  for (const auto& ab : continued)
+    if (const auto it = contact.find(ab); it != contact.end()) joins.push_back({it->second, ab});
   for (const auto& [ab, n] : contact) {
+    if (std::binary_search(continued.begin(), continued.end(), ab)) continue;
     if (ab.second <= max_unit && corridor_join(ab, n)) {
       joins.push_back({n, ab});
       continue;
