@@ -135,10 +135,10 @@ void label_unreached_components(const ClassGrid& grid, double resolution, cv::Ma
 // rule's 3/4 of the join for a corridor cut across). A corridor in a ring or an L is several
 // rectangles meeting end to side; its contact is the corridor's width, often under 2 m, and too
 // close to the walls for open_core (office_a: a ring in 6 pieces).
-// Units that continue each other (unit_chains.h: facing sides that coincide, an open seam) are
-// one space whatever their size and contact: a corridor 1.1 m wide in pieces meets its next
-// piece over no more than a door's width, and the pieces of office_h's 3.8 m ring corridor are
-// each larger than kMaxJoinedPiece.
+// Units that continue each other (unit_chains.h: facing sides that meet over the whole free
+// passage between them) are one space whatever their size and contact: a corridor 1.35 m wide in
+// pieces (lab_b_scan) meets its next piece over no more than a door's width, and the pieces of
+// office_h's 3.8 m ring corridor are each larger than kMaxJoinedPiece.
 // Pairs are joined widest contact first. split_at_wall_gaps runs afterwards and cuts again
 // where a straight wall line with a gap crosses a joined segment.
 constexpr double kOpenJoin = 2.0;           // m of free contact

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <tuple>
 
 namespace ksmc::stdlib::indoor::io {
 
@@ -35,8 +36,8 @@ bool sides_of(const Quad& q, std::array<Side, 4>& out) {
   return true;
 }
 
-// Whether sides s and t face each other and coincide (see SideMatch); their seam when they do.
-bool coincide(const Side& s, const Side& t, double gap, Point2& from, Point2& to) {
+// Whether sides s and t face each other and meet (see SideMatch); the match when they do.
+bool meet(const Side& s, const Side& t, double gap, SideMatch& m) {
   const double min_cos = std::cos(kSideAngleDeg * std::numbers::pi / 180.0);
   if (s.nx * t.nx + s.ny * t.ny > -min_cos) return false;
   const double apart = (t.a.x - s.a.x) * s.nx + (t.a.y - s.a.y) * s.ny;
@@ -44,9 +45,10 @@ bool coincide(const Side& s, const Side& t, double gap, Point2& from, Point2& to
   const auto along = [&s](Point2 p) { return (p.x - s.a.x) * s.tx + (p.y - s.a.y) * s.ty; };
   const double t0 = std::min(along(t.a), along(t.b)), t1 = std::max(along(t.a), along(t.b));
   const double u0 = std::max(0.0, t0), u1 = std::min(s.length, t1);
-  if (u1 - u0 < kSideCover * std::max(s.length, t.length)) return false;
+  if (u1 - u0 < kSideOverlap * std::min(s.length, t.length)) return false;
+  const double v0 = std::min(0.0, t0), v1 = std::max(s.length, t1);
   const auto at = [&](double u) { return Point2{s.a.x + u * s.tx + 0.5 * apart * s.nx, s.a.y + u * s.ty + 0.5 * apart * s.ny}; };
-  from = at(u0), to = at(u1);
+  m.from = at(v0), m.to = at(v1), m.lo = u0 - v0, m.hi = u1 - v0;
   return true;
 }
 
@@ -63,12 +65,12 @@ std::vector<SideMatch> matching_sides(const std::vector<UnitResult>& units, doub
     for (std::size_t j = i + 1; j < sides.size(); ++j)
       for (const auto& s : sides[i].second)
         for (const auto& t : sides[j].second)
-          if (Point2 from, to; coincide(s, t, gap, from, to)) {
-            const auto [a, b] = std::minmax(sides[i].first, sides[j].first);
-            out.push_back({a, b, std::max(s.length, t.length), from, to});
+          if (SideMatch m; meet(s, t, gap, m)) {
+            std::tie(m.a, m.b) = std::minmax(sides[i].first, sides[j].first);
+            out.push_back(m);
           }
   std::sort(out.begin(), out.end(), [](const SideMatch& x, const SideMatch& y) {
-    return x.a != y.a ? x.a < y.a : x.b != y.b ? x.b < y.b : x.side > y.side;
+    return x.a != y.a ? x.a < y.a : x.b != y.b ? x.b < y.b : x.hi - x.lo > y.hi - y.lo;
   });
   out.erase(std::unique(out.begin(), out.end(), [](const SideMatch& x, const SideMatch& y) { return x.a == y.a && x.b == y.b; }),
             out.end());
@@ -81,21 +83,33 @@ std::vector<std::pair<int, int>> continued_units(const ClassGrid& grid, const st
     const double len = std::hypot(m.to.x - m.from.x, m.to.y - m.from.y);
     if (!(len > 0.0)) continue;
     const double tx = (m.to.x - m.from.x) / len, ty = (m.to.y - m.from.y) / len;
-    // Free cells along the seam shifted by `off` cells across it, one per cell.
-    int samples = 0;
+    const auto free_cell = [&grid](double x, double y) {
+      const int r = static_cast<int>(std::lround(y)), c = static_cast<int>(std::lround(x));
+      return r >= 0 && c >= 0 && r < grid.rows && c < grid.cols && grid(r, c) == static_cast<std::uint8_t>(Cell::Free);
+    };
+    // Free samples along the seam shifted by `off` cells across it, one per cell; a sample is
+    // free when the cells 1 cell either side of it across the seam are too (a wall drawn one cell
+    // thin, slanted against the units' frame, is not missed). `shared`: of them, those where
+    // both sides are.
+    int samples = 0, shared = 0;
     const auto free_along = [&](double off) {
       int n = 0;
-      samples = 0;
+      samples = 0, shared = 0;
       for (double t = 0.0; t <= len; t += 1.0, ++samples) {
-        const int r = static_cast<int>(std::lround(m.from.y + t * ty + off * tx));
-        const int c = static_cast<int>(std::lround(m.from.x + t * tx - off * ty));
-        n += r >= 0 && c >= 0 && r < grid.rows && c < grid.cols && grid(r, c) == static_cast<std::uint8_t>(Cell::Free);
+        bool open = true;
+        for (const double k : {off - 1.0, off, off + 1.0})
+          open = open && free_cell(m.from.x + t * tx - k * ty, m.from.y + t * ty + k * tx);
+        if (open) {
+          ++n;
+          shared += t >= m.lo - 0.5 && t <= m.hi + 0.5;
+        }
       }
       return n;
     };
     const int beside = std::max(free_along(-kSeamBeside), free_along(kSeamBeside));
     const int seam = free_along(0.0);
-    if (seam >= kFreeSeam * samples && seam >= kOpenSeam * beside) out.emplace_back(m.a, m.b);
+    if (beside >= kFreeBeside * samples && seam >= kOpenSeam * beside && shared >= kSharedSeam * seam)
+      out.emplace_back(m.a, m.b);
   }
   return out;
 }
