@@ -91,24 +91,27 @@ std::vector<std::pair<int, int>> continued_units(const ClassGrid& grid, const st
     // free when the cells 1 cell either side of it across the seam are too (a wall drawn one cell
     // thin, slanted against the units' frame, is not missed). `shared`: of them, those where
     // both sides are.
-    int samples = 0, shared = 0;
-    const auto free_along = [&](double off) {
-      int n = 0;
-      samples = 0, shared = 0;
-      for (double t = 0.0; t <= len; t += 1.0, ++samples) {
+    struct Count {
+      int free = 0, shared = 0;
+    };
+    const int samples = static_cast<int>(std::floor(len)) + 1;
+    const auto count_along = [&](double off) {
+      Count n;
+      for (int i = 0; i < samples; ++i) {
+        const double t = i;
         bool open = true;
         for (const double k : {off - 1.0, off, off + 1.0})
           open = open && free_cell(m.from.x + t * tx - k * ty, m.from.y + t * ty + k * tx);
         if (open) {
-          ++n;
-          shared += t >= m.lo - 0.5 && t <= m.hi + 0.5;
+          ++n.free;
+          n.shared += t >= m.lo - 0.5 && t <= m.hi + 0.5;
         }
       }
       return n;
     };
-    const int beside = std::max(free_along(-kSeamBeside), free_along(kSeamBeside));
-    const int seam = free_along(0.0);
-    if (beside >= kFreeBeside * samples && seam >= kOpenSeam * beside && shared >= kSharedSeam * seam)
+    const int beside = std::max(count_along(-kSeamBeside).free, count_along(kSeamBeside).free);
+    const Count seam = count_along(0.0);
+    if (beside >= kFreeBeside * samples && seam.free >= kOpenSeam * beside && seam.shared >= kSharedSeam * seam.free)
       out.emplace_back(m.a, m.b);
   }
   return out;

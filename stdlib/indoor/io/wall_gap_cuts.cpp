@@ -242,13 +242,13 @@ cv::Mat1b aligned_scan_cuts(const ClassGrid& grid, const cv::Mat1w& label, const
 
 // A corridor continues (split_at_wall_gaps in wall_gap_cuts.h): where an 8-connected piece of
 // `cut` crosses a corridor-shaped unit from side to side, the crossing is erased. A piece crosses
-// unit u when at least 90 % of its cells lie in u (or within 2 cells of it) and a strand of them
-// (its cells in u within kMaxCrossCut along u) spans u's width across u but for kSideSlack at each
-// side (the slack of the unit's edges; a door frame's stubs narrow the corridor more) and at least
-// kCorridorSpan of it, with u going on for at least its width beyond the strand at both ends, and
-// walled there: on each side, at least a third of the cross-sections 1/2 to 3/2 widths away (one
-// per cell) are free runs from wall to wall no longer than u's width and the slack (doors in the
-// corridor's walls open the others). A piece that is its strand is erased whole; of a longer
+// unit u when at least 90 % of its cells lie in u (or within 2 cells of it) and they, or a strand
+// of them (a run of u's cross-sections they fill to half its width), lie within kMaxCrossCut along
+// u and span u's width across u but for kSideSlack at each side (the slack of the unit's edges; a
+// door frame's stubs narrow the corridor more) and at least kCorridorSpan of it, with u going on
+// for at least its width beyond them at both ends, and walled there: on each side, at least a
+// third of the cross-sections 1/2 to 3/2 widths away (one per cell) are free runs from wall to
+// wall no longer than u's width and the slack (doors in the corridor's walls open the others). A piece that crosses as a whole is erased whole; of a longer
 // piece (a cut across that touches the cuts of door gaps in the corridor's walls at its ends:
 // Freiburg79_scan once its specks are cleared) only the strand. A cut where a corridor piece ends
 // in a crossing corridor, or opens into a room, stays (NLB: a side passage whose unit runs on

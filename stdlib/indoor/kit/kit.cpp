@@ -265,7 +265,6 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
   const io::MapCleanup cleanup{speck_cells, solid_depth / res};
   cli::stage(in, "clearing specks and classifying solid interiors");
   const io::CleanupCounts cleaned = io::apply_cleanup(map->grid, cleanup);
-  const std::size_t specks_cleared = cleaned.specks_cleared, solid_cells = cleaned.solid_unexplained;
   runtime::io::throw_if_cancelled("indoor: after the solid interior");
   shared->grid = map->grid;
   shared->resolution = res;
@@ -349,8 +348,8 @@ cli::DomainSetup load(const std::shared_ptr<const blocks::Binding>& binding, con
   extra["wbu_candidates"] = fixed.wbu_count;
   extra["rpb_candidate"] = fixed.rpb_found;
   extra["frame_deg"] = fixed.frame_deg;
-  extra["solid_interior"] = {{"depth_m", solid_depth}, {"cells_unexplained", solid_cells}};
-  extra["specks"] = {{"size_m", speck_size}, {"size_cells", speck_cells}, {"cells_cleared", specks_cleared}};
+  extra["solid_interior"] = {{"depth_m", solid_depth}, {"cells_unexplained", cleaned.solid_unexplained}};
+  extra["specks"] = {{"size_m", speck_size}, {"size_cells", speck_cells}, {"cells_cleared", cleaned.specks_cleared}};
   extra["semantic"] = {{"enabled", plan.semantic}, {"mln_prior", plan.mln_prior}};
   setup.summary_extra = std::move(extra);
   return setup;
